@@ -1,0 +1,239 @@
+#include "segment.hpp"
+
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+
+#include <b2b/b2b.h>
+
+#include "hermite_basis.hpp"
+#include "vec3.hpp"
+
+namespace b2b {
+namespace curve {
+namespace {
+
+// Two nodes coincide when their distance is below B2B_LENGTH_MIN or lost in
+// the rounding of their coordinates (a few ulps of the larger one).
+bool coincident(const double* X, int sa, int sb) {
+  const double* xa = X + 3 * sa;
+  const double* xb = X + 3 * sb;
+  double d[3];
+  sub3(xb, xa, d);
+  const double tol =
+      std::fmax(B2B_LENGTH_MIN, 4.0 * DBL_EPSILON * std::fmax(max_abs3(xa), max_abs3(xb)));
+  return !(norm3(d) > tol);
+}
+
+bool is_nodal(int kind) {
+  return kind == B2B_CURVE_HERMITE_NODAL || kind == B2B_CURVE_HERMITE_NODAL_WEIGHTED;
+}
+
+}  // namespace
+
+unsigned used_slots(int kind, int start_rule, int end_rule) {
+  const bool has_prev = start_rule == B2B_END_NEIGHBOUR;
+  const bool has_next = end_rule == B2B_END_NEIGHBOUR;
+  switch (kind) {
+    case B2B_CURVE_LINEAR:
+      return 0x6u;
+    case B2B_CURVE_HERMITE_MIDPOINT:
+      return 0x2u | (has_prev ? 0x1u : 0u) | (has_next ? 0x4u : 0u);
+    default:
+      return 0x6u | (has_prev ? 0x1u : 0u) | (has_next ? 0x8u : 0u);
+  }
+}
+
+bool uses_start_tangent(int kind, int start_rule) {
+  return kind != B2B_CURVE_LINEAR && start_rule == B2B_END_TANGENT;
+}
+
+bool uses_end_tangent(int kind, int end_rule) {
+  return kind != B2B_CURVE_LINEAR && end_rule == B2B_END_TANGENT;
+}
+
+void Segment::set_linear(int k, double c0, double c1, double c2, double c3, const double* X) {
+  Term& t = term_[k];
+  t.nonlinear = false;
+  t.coef[0] = c0;
+  t.coef[1] = c1;
+  t.coef[2] = c2;
+  t.coef[3] = c3;
+  for (int i = 0; i < 3; ++i) {
+    double v = 0.0;
+    for (int s = 0; s < 4; ++s)
+      if (t.coef[s] != 0.0) v += t.coef[s] * X[3 * s + i];  // unused slots are never read
+    t.value[i] = v;
+  }
+}
+
+Failure Segment::build(int kind, int start_rule, int end_rule, const double* X,
+                       const double* unit_tangents, bool derivatives) {
+  Failure f;
+  auto reject = [&f](int status, int sa, int sb) {
+    f.status = status;
+    f.slot_a = sa;
+    f.slot_b = sb;
+    return f;
+  };
+  linear_kind_ = (kind == B2B_CURVE_LINEAR);
+  for (Term& t : term_) t.nonlinear = false;
+
+  // A nonlinear end tangent sigma * |x_q - x_p| * unit(u).
+  auto set_tangent = [this](int k, double sigma, int p, int q) -> TangentTerm& {
+    Term& t = term_[k];
+    t.nonlinear = true;
+    t.tangent.sigma = sigma;
+    t.tangent.p = p;
+    t.tangent.q = q;
+    return t.tangent;
+  };
+  auto set_direction = [](TangentTerm& tt, int kind_, int a, int b, int c) {
+    tt.dir = (kind_ == B2B_CURVE_HERMITE_NODAL_WEIGHTED) ? TangentTerm::Dir::Weighted
+                                                        : TangentTerm::Dir::Chord;
+    tt.a = a;
+    tt.b = b;
+    tt.c = c;
+  };
+  auto set_given = [](TangentTerm& tt, const double* u) {
+    tt.dir = TangentTerm::Dir::Constant;
+    for (int i = 0; i < 3; ++i) tt.given[i] = u[i];
+  };
+
+  if (kind == B2B_CURVE_LINEAR || is_nodal(kind)) {
+    if (coincident(X, 1, 2)) return reject(B2B_ERR_COINCIDENT, 1, 2);
+    if (is_nodal(kind) && start_rule == B2B_END_NEIGHBOUR) {
+      if (coincident(X, 0, 1)) return reject(B2B_ERR_COINCIDENT, 0, 1);
+      if (coincident(X, 0, 2)) return reject(B2B_ERR_FOLDED, 0, 2);
+    }
+    if (is_nodal(kind) && end_rule == B2B_END_NEIGHBOUR) {
+      if (coincident(X, 2, 3)) return reject(B2B_ERR_COINCIDENT, 2, 3);
+      if (coincident(X, 1, 3)) return reject(B2B_ERR_FOLDED, 1, 3);
+    }
+    set_linear(0, 0, 1, 0, 0, X);  // x2
+    set_linear(2, 0, 0, 1, 0, X);  // x3
+    // The chord tangent (x3 - x2)/2: the linear kind, and a reflected ghost.
+    if (kind == B2B_CURVE_LINEAR || start_rule == B2B_END_REFLECT)
+      set_linear(1, 0, -0.5, 0.5, 0, X);
+    else if (start_rule == B2B_END_TANGENT)
+      set_given(set_tangent(1, 0.5, 1, 2), unit_tangents);
+    else
+      set_direction(set_tangent(1, 0.5, 1, 2), kind, 0, 1, 2);
+    if (kind == B2B_CURVE_LINEAR || end_rule == B2B_END_REFLECT)
+      set_linear(3, 0, -0.5, 0.5, 0, X);
+    else if (end_rule == B2B_END_TANGENT)
+      set_given(set_tangent(3, 0.5, 1, 2), unit_tangents + 3);
+    else
+      set_direction(set_tangent(3, 0.5, 1, 2), kind, 1, 2, 3);
+  } else {  // B2B_CURVE_HERMITE_MIDPOINT, centred on x2
+    const bool first = start_rule != B2B_END_NEIGHBOUR;
+    const bool last = end_rule != B2B_END_NEIGHBOUR;
+    if (first && last) return reject(B2B_ERR_RANGE, -1, -1);
+    if (!first && coincident(X, 0, 1)) return reject(B2B_ERR_COINCIDENT, 0, 1);
+    if (!last && coincident(X, 1, 2)) return reject(B2B_ERR_COINCIDENT, 1, 2);
+    if (first) {  // half element from x2 to the midpoint of x2-x3
+      set_linear(0, 0, 1, 0, 0, X);
+      if (start_rule == B2B_END_TANGENT)
+        set_given(set_tangent(1, 0.25, 1, 2), unit_tangents);
+      else
+        set_linear(1, 0, -0.25, 0.25, 0, X);
+      set_linear(2, 0, 0.5, 0.5, 0, X);
+      set_linear(3, 0, -0.25, 0.25, 0, X);
+    } else if (last) {  // half element from the midpoint of x1-x2 to x2
+      set_linear(0, 0.5, 0.5, 0, 0, X);
+      set_linear(1, -0.25, 0.25, 0, 0, X);
+      set_linear(2, 0, 1, 0, 0, X);
+      if (end_rule == B2B_END_TANGENT)
+        set_given(set_tangent(3, 0.25, 0, 1), unit_tangents + 3);
+      else
+        set_linear(3, -0.25, 0.25, 0, 0, X);
+    } else {  // parabola m12 -> m23 with control point x2
+      set_linear(0, 0.5, 0.5, 0, 0, X);
+      set_linear(1, -0.5, 0.5, 0, 0, X);
+      set_linear(2, 0, 0.5, 0.5, 0, X);
+      set_linear(3, 0, -0.5, 0.5, 0, X);
+    }
+  }
+
+  for (int k = 1; k < 4; k += 2) {
+    Term& t = term_[k];
+    if (!t.nonlinear) continue;
+    if (!t.tangent.evaluate(X)) return reject(B2B_ERR_FOLDED, t.tangent.a, t.tangent.c);
+    for (int i = 0; i < 3; ++i) t.value[i] = t.tangent.value[i];
+    if (derivatives) t.tangent.jacobian();
+  }
+  return f;
+}
+
+void Segment::point(double xi, double* x, double* xd, double* xdd) const {
+  if (linear_kind_) {  // the chord: no Hermite weights to pay for
+    const double* x2 = term_[0].value;
+    const double* x3 = term_[2].value;
+    for (int i = 0; i < 3; ++i) {
+      if (x) x[i] = 0.5 * (1.0 - xi) * x2[i] + 0.5 * (1.0 + xi) * x3[i];
+      if (xd) xd[i] = 0.5 * (x3[i] - x2[i]);
+      if (xdd) xdd[i] = 0.0;
+    }
+    return;
+  }
+  const HermiteBasis hb(xi);
+  for (int i = 0; i < 3; ++i) {
+    double v = 0, vd = 0, vdd = 0;
+    for (int k = 0; k < 4; ++k) {
+      const double tv = term_[k].value[i];
+      v += hb.h[k] * tv;
+      vd += hb.dh[k] * tv;
+      vdd += hb.ddh[k] * tv;
+    }
+    if (x) x[i] = v;
+    if (xd) xd[i] = vd;
+    if (xdd) xdd[i] = vdd;
+  }
+}
+
+void Segment::jacobians(double xi, double* P, double* Pd) const {
+  const HermiteBasis hb(xi);
+  // Linear terms contribute a multiple of the identity per slot.
+  double wgt[4] = {0, 0, 0, 0}, dwgt[4] = {0, 0, 0, 0};
+  for (int k = 0; k < 4; ++k) {
+    if (term_[k].nonlinear) continue;
+    for (int s = 0; s < 4; ++s) {
+      wgt[s] += hb.h[k] * term_[k].coef[s];
+      dwgt[s] += hb.dh[k] * term_[k].coef[s];
+    }
+  }
+  std::memset(P, 0, 36 * sizeof(double));
+  std::memset(Pd, 0, 36 * sizeof(double));
+  for (int s = 0; s < 4; ++s)
+    for (int i = 0; i < 3; ++i) {
+      P[i + 3 * (3 * s + i)] = wgt[s];
+      Pd[i + 3 * (3 * s + i)] = dwgt[s];
+    }
+  for (int k = 1; k < 4; k += 2) {
+    if (!term_[k].nonlinear) continue;
+    const double* J = term_[k].tangent.jac;
+    for (int m = 0; m < 36; ++m) {
+      P[m] += hb.h[k] * J[m];
+      Pd[m] += hb.dh[k] * J[m];
+    }
+  }
+}
+
+void Segment::contracted_hessians(double xi, const double* w, double* Hx, double* Hxd) const {
+  std::memset(Hx, 0, 144 * sizeof(double));
+  std::memset(Hxd, 0, 144 * sizeof(double));
+  if (linear_in_X()) return;
+  const HermiteBasis hb(xi);
+  double H[144];
+  for (int k = 1; k < 4; k += 2) {
+    if (!term_[k].nonlinear) continue;
+    term_[k].tangent.contracted_hessian(w, H);
+    for (int m = 0; m < 144; ++m) {
+      Hx[m] += hb.h[k] * H[m];
+      Hxd[m] += hb.dh[k] * H[m];
+    }
+  }
+}
+
+}  // namespace curve
+}  // namespace b2b

@@ -1,0 +1,64 @@
+// One segment of a smoothed beam centreline, for every curve kind:
+//
+//     x(xi) = H1 P0 + H2 T0 + H3 P1 + H4 T1        (cubic Hermite, xi in [-1, 1])
+//
+// P0, P1 (end points) are always linear in the 12 patch coordinates X; the end
+// tangents T0, T1 are either linear or a TangentTerm. build() does the
+// xi-independent work once (what a closest-point iteration reuses); the
+// evaluators then cost a few dozen flops per xi.
+#pragma once
+
+#include "tangent_term.hpp"
+
+namespace b2b {
+namespace curve {
+
+// Why build() refused a patch: a b2b status code and the patch slots
+// (0-based, -1 if none) of the offending element or fold.
+struct Failure {
+  int status = 0;
+  int slot_a = -1, slot_b = -1;
+};
+
+// Bit k set: patch slot k is read by a segment of this kind with these rules.
+// Kind and rules must be valid (checked by the caller).
+unsigned used_slots(int kind, int start_rule, int end_rule);
+
+// True if the segment's end tangent at the start/end comes from the host.
+bool uses_start_tangent(int kind, int start_rule);
+bool uses_end_tangent(int kind, int end_rule);
+
+class Segment {
+ public:
+  // X: 12 patch coordinates; unit_tangents: 6 doubles (unit host directions
+  // at the first and last node), read only where a rule is B2B_END_TANGENT.
+  // Inputs must already be valid (known kind/rules, finite, in range).
+  // With derivatives = false only point() may be used afterwards.
+  Failure build(int kind, int start_rule, int end_rule, const double* X,
+                const double* unit_tangents, bool derivatives);
+
+  // x(xi), dx/dxi, d2x/dxi2 (any pointer may be null).
+  void point(double xi, double* x, double* xd, double* xdd) const;
+  // P = dx/dX and Pd = d(dx/dxi)/dX, 3x12 column-major each.
+  void jacobians(double xi, double* P, double* Pd) const;
+  // Hx = w . d2x/dX2 and Hxd = w . d2(dx/dxi)/dX2, 12x12 column-major each.
+  void contracted_hessians(double xi, const double* w, double* Hx, double* Hxd) const;
+  // True when the segment is linear in X (all second derivatives vanish).
+  bool linear_in_X() const { return !term_[1].nonlinear && !term_[3].nonlinear; }
+
+ private:
+  struct Term {
+    bool nonlinear = false;
+    double coef[4] = {0, 0, 0, 0};  // linear: value = sum_s coef[s] x_s
+    TangentTerm tangent;            // nonlinear
+    double value[3] = {0, 0, 0};
+  };
+  // Order of the Hermite weights: start point, start tangent, end point, end tangent.
+  Term term_[4];
+  bool linear_kind_ = false;
+
+  void set_linear(int k, double c0, double c1, double c2, double c3, const double* X);
+};
+
+}  // namespace curve
+}  // namespace b2b

@@ -1,0 +1,51 @@
+// The one nonlinear ingredient of every smoothed segment: an end tangent
+//
+//     T(X) = sigma * L(X) * unit(u(X)),   L = |x_q - x_p|,
+//
+// where X are the 12 patch coordinates, L is the length of one patch element
+// and u a direction made of patch nodes:
+//   Chord     u = x_c - x_a                           (Litewka's nodal tangent)
+//   Weighted  u = l_bc^2 (x_b - x_a) + l_ab^2 (x_c - x_b)
+//             (derivative of the chord-length parabola through a, b, c)
+//   Constant  u = a host-given direction (only L varies with X).
+// Value, 3x12 Jacobian and, for any vector w, the 12x12 contraction
+// w . d2T/dX2 are computed in closed form (contact-notes.md 2.2).
+#pragma once
+
+namespace b2b {
+namespace curve {
+
+struct TangentTerm {
+  enum class Dir { Constant, Chord, Weighted };
+
+  // --- set-up (filled by the segment) ---
+  double sigma = 0.5;
+  int p = 1, q = 2;          // L = |x_q - x_p|
+  Dir dir = Dir::Chord;
+  int a = 0, b = 1, c = 2;   // slots of u (Chord uses a and c)
+  double given[3] = {0, 0, 0};  // unit direction for Dir::Constant
+
+  // --- results ---
+  double value[3] = {0, 0, 0};
+  double jac[36];            // dT/dX, 3x12 column-major (after jacobian())
+
+  // Computes value. Returns false when u has no direction (a folded patch).
+  bool evaluate(const double* X);
+  // Fills jac (and the Jacobian of u it needs). Call after evaluate().
+  void jacobian();
+  // H = w . d2T/dX2, a symmetric 12x12 column-major matrix (overwritten).
+  // Call after jacobian().
+  void contracted_hessian(const double* w, double* H) const;
+
+ private:
+  double L_ = 0, eL_[3] = {0, 0, 0};   // element length and unit chord
+  double r_ = 0, uhat_[3] = {0, 0, 0}; // |u~| and unit(u)
+  // u~ = k0 * u with k0 a positive constant frozen at evaluation: unit(u~) =
+  // unit(u) for all X, so derivatives of unit(u) follow from those of u~
+  // while u~ stays O(1) for any mesh size (no overflow at 1e100).
+  double k0_ = 1, s1_ = 0, s2_ = 0, w1_[3] = {0, 0, 0}, w2_[3] = {0, 0, 0};
+  double du_[36];            // d(u~)/dX, 3x12
+};
+
+}  // namespace curve
+}  // namespace b2b
