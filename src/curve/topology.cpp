@@ -16,14 +16,16 @@ void segment_patch(int kind, int n_nodes, int closed, int s, int nodes[4], int* 
                    int* end_rule) {
   // Slot x2 holds node s for every kind: nodal and linear segments run from
   // node s to s + 1 (slots x2, x3), a midpoint segment is centred on node s.
-  const int first = s - 1;
+  // 64-bit arithmetic: s + 2 and the wrap-around overflow int for rings of
+  // nearly INT_MAX nodes.
+  const long long n = n_nodes;
   for (int k = 0; k < 4; ++k) {
-    int node = first + k;
+    long long node = static_cast<long long>(s) - 1 + k;
     if (closed)
-      node = ((node % n_nodes) + n_nodes) % n_nodes;
-    else if (node < 0 || node >= n_nodes)
+      node = (node + n) % n;
+    else if (node < 0 || node >= n)
       node = -1;
-    nodes[k] = node;
+    nodes[k] = static_cast<int>(node);
   }
   // Slots the kind never reads.
   if (kind == B2B_CURVE_LINEAR) nodes[0] = nodes[3] = -1;
