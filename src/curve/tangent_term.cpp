@@ -117,7 +117,7 @@ void TangentTerm::jacobian() {
     }
 }
 
-void TangentTerm::contracted_hessian(const double* w, double* H) const {
+void TangentTerm::accumulate_hessian(const double* w, double* H) const {
   std::memset(H, 0, 144 * sizeof(double));
 
   // w . d2T = sigma [ (w.uhat) d2L + dL (x) g + g (x) dL + L w.d2uhat ]
@@ -192,6 +192,19 @@ void TangentTerm::contracted_hessian(const double* w, double* H) const {
   add_sym_outer(tmp, f1, ds1);
   add_sym_outer(tmp, f2, ds2);
   for (int k = 0; k < 144; ++k) H[k] += s * tmp[k];
+}
+
+void TangentTerm::contracted_hessian(const double* w, double* H) const {
+  accumulate_hessian(w, H);
+  // The terms above are symmetric only up to rounding (du^T M du sums in a
+  // different order for (a,b) and (b,a)); make the matrix exactly symmetric,
+  // as documented, so hosts may rely on it.
+  for (int j = 0; j < 12; ++j)
+    for (int i = j + 1; i < 12; ++i) {
+      const double m = 0.5 * (H[i + 12 * j] + H[j + 12 * i]);
+      H[i + 12 * j] = m;
+      H[j + 12 * i] = m;
+    }
 }
 
 }  // namespace curve

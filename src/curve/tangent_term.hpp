@@ -38,6 +38,8 @@ struct TangentTerm {
   void contracted_hessian(const double* w, double* H) const;
 
  private:
+  void accumulate_hessian(const double* w, double* H) const;
+
   double L_ = 0, eL_[3] = {0, 0, 0};   // element length and unit chord
   double r_ = 0, uhat_[3] = {0, 0, 0}; // |u~| and unit(u)
   // u~ = k0 * u with k0 a positive constant frozen at evaluation: unit(u~) =
