@@ -85,7 +85,8 @@
  * Bad input: B2B_ERR_NULL (patch, or end_tangents when a rule in force is
  * TANGENT), B2B_ERR_UNKNOWN_KIND (kind or rule), B2B_ERR_NONFINITE (a used
  * coordinate, a used end tangent, or xi), B2B_ERR_RANGE (a coordinate beyond
- * B2B_COORD_MAX, a zero end tangent), B2B_ERR_COINCIDENT (an element of the
+ * B2B_COORD_MAX, a zero end tangent, or a finite xi so far outside [-1, 1]
+ * that a requested output would overflow), B2B_ERR_COINCIDENT (an element of the
  * patch has zero length), B2B_ERR_FOLDED (l13 = 0 or l24 = 0: the nodes on
  * both sides of x2 or x3 coincide, so the tangent has no direction).
  */

@@ -192,10 +192,16 @@ void Segment::point(double xi, double* x, double* xd, double* xdd) const {
 }
 
 void Segment::jacobians(double xi, double* P, double* Pd) const {
-  const HermiteBasis hb(xi);
   // Linear terms contribute a multiple of the identity per slot.
   double wgt[4] = {0, 0, 0, 0}, dwgt[4] = {0, 0, 0, 0};
-  for (int k = 0; k < 4; ++k) {
+  if (linear_kind_) {  // the chord's weights, without the Hermite detour
+    wgt[1] = 0.5 * (1.0 - xi);
+    wgt[2] = 0.5 * (1.0 + xi);
+    dwgt[1] = -0.5;
+    dwgt[2] = 0.5;
+  }
+  const HermiteBasis hb(xi);
+  for (int k = 0; k < 4 && !linear_kind_; ++k) {
     if (term_[k].nonlinear) continue;
     for (int s = 0; s < 4; ++s) {
       wgt[s] += hb.h[k] * term_[k].coef[s];
