@@ -268,10 +268,10 @@ contains
     integer :: i
     text = procname // ': ' // argname // ' has shape (' // shape_text(got) // &
            '), expected (' // shape_text(want) // ')'
-    do i = 1, size(buf)
+    buf = c_null_char
+    do i = 1, min(len_trim(text), size(buf) - 1)
       buf(i) = text(i:i)
     end do
-    buf(size(buf)) = c_null_char
     call finish(procname, int(B2B_ERR_SIZE, c_int), buf, ierr, errmsg)
   end subroutine
 
@@ -309,7 +309,7 @@ contains
     buf = c_null_char
   end function
 
-  !> The characters of a NUL-terminated C char array, trailing blanks kept out.
+  !> The characters of a NUL-terminated C char array (all of them if no NUL).
   function c_chars(buf) result(s)
     character(kind=c_char), intent(in) :: buf(:)
     character(len=:), allocatable :: s
