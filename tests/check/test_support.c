@@ -1,0 +1,109 @@
+#include "test_support.h"
+
+#include "ring_accuracy.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+const int tst_kinds[4] = {B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL,
+                          B2B_CURVE_HERMITE_NODAL_WEIGHTED};
+
+const char *tst_kind_name(int kind) {
+  switch (kind) {
+    case B2B_CURVE_LINEAR: return "linear";
+    case B2B_CURVE_HERMITE_MIDPOINT: return "hermite-midpoint";
+    case B2B_CURVE_HERMITE_NODAL: return "hermite-nodal";
+    case B2B_CURVE_HERMITE_NODAL_WEIGHTED: return "hermite-nodal-weighted";
+    default: return "unknown";
+  }
+}
+
+void tst_rng_seed(tst_rng *rng, uint64_t seed) { rng->state = seed; }
+
+double tst_uniform(tst_rng *rng, double lo, double hi) {
+  uint64_t z = (rng->state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return lo + (hi - lo) * (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static void normalize(double *v) {
+  const double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  v[0] /= n;
+  v[1] /= n;
+  v[2] /= n;
+}
+
+static void random_unit(tst_rng *rng, double *v) {
+  do {
+    for (int i = 0; i < 3; ++i) v[i] = tst_uniform(rng, -1.0, 1.0);
+  } while (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] < 0.05);
+  normalize(v);
+}
+
+void tst_random_patch(tst_rng *rng, double h, double max_turn, double patch[12]) {
+  double dir[3];
+  random_unit(rng, dir);
+  for (int i = 0; i < 3; ++i) patch[i] = tst_uniform(rng, -2.0 * h, 2.0 * h);
+  for (int k = 1; k < 4; ++k) {
+    if (k > 1) {  // turn the direction by up to max_turn about a random normal
+      double a[3], n[3];
+      random_unit(rng, a);
+      n[0] = a[1] * dir[2] - a[2] * dir[1];
+      n[1] = a[2] * dir[0] - a[0] * dir[2];
+      n[2] = a[0] * dir[1] - a[1] * dir[0];
+      normalize(n);
+      const double t = tst_uniform(rng, 0.0, max_turn);
+      for (int i = 0; i < 3; ++i) dir[i] = cos(t) * dir[i] + sin(t) * n[i];
+    }
+    const double len = h * tst_uniform(rng, 0.6, 1.4);
+    for (int i = 0; i < 3; ++i) patch[3 * k + i] = patch[3 * (k - 1) + i] + len * dir[i];
+  }
+}
+
+void tst_eval(int kind, int start_rule, int end_rule, const double patch[12],
+              const double end_tangents[6], double xi, double x[9], double dx[72],
+              double d2x[864]) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  const int st = b2b_segment_eval(kind, start_rule, end_rule, patch, end_tangents, xi, x, dx, d2x,
+                                  msg, (int)sizeof msg);
+  ck_assert_msg(st == B2B_OK, "b2b_segment_eval(%s) returned %d: %s", tst_kind_name(kind), st,
+                msg);
+}
+
+double tst_max_abs(const double *a, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, fabs(a[i]));
+  return m;
+}
+
+double tst_rel_diff(const double *a, const double *b, int n, double floor) {
+  double d = 0.0;
+  for (int i = 0; i < n; ++i) d = fmax(d, fabs(a[i] - b[i]));
+  const double scale = fmax(floor, fmax(tst_max_abs(a, n), tst_max_abs(b, n)));
+  return scale > 0.0 ? d / scale : d;
+}
+
+void tst_ring_nodes(int n, double radius, int alternating, double *coords) {
+  ring_nodes(n, radius, alternating, coords);
+}
+
+void tst_gather_patch(int kind, int n_nodes, int closed, int segment, const double *coords,
+                      double patch[12], int *start_rule, int *end_rule) {
+  int nodes[4];
+  char msg[B2B_ERRMSG_LEN] = "";
+  const int st = b2b_beam_segment_patch(kind, n_nodes, closed, segment, nodes, start_rule,
+                                        end_rule, msg, (int)sizeof msg);
+  ck_assert_msg(st == B2B_OK, "b2b_beam_segment_patch returned %d: %s", st, msg);
+  for (int k = 0; k < 4; ++k)
+    for (int i = 0; i < 3; ++i) patch[3 * k + i] = nodes[k] >= 0 ? coords[3 * nodes[k] + i] : NAN;
+}
+
+int tst_run_suite(Suite *suite) {
+  SRunner *runner = srunner_create(suite);
+  srunner_run_all(runner, CK_NORMAL);
+  const int failed = srunner_ntests_failed(runner);
+  srunner_free(runner);
+  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
