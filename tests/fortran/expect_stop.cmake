@@ -1,0 +1,31 @@
+# Runs PROGRAM (ftest_stop_without_ierr) and checks that module b2b stopped it:
+# a non-zero exit status, the status and the library's message on stderr, and
+# no sign that the failing call returned.
+#   cmake -DPROGRAM=<path> [-DMODE=errmsg] -P expect_stop.cmake
+if(NOT DEFINED PROGRAM)
+  message(FATAL_ERROR "expect_stop.cmake: PROGRAM is not set")
+endif()
+set(_args "")
+if(MODE STREQUAL "errmsg")
+  set(_args errmsg)
+endif()
+execute_process(COMMAND "${PROGRAM}" ${_args}
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "exit status: ${rc}")
+message(STATUS "stdout: ${out}")
+message(STATUS "stderr: ${err}")
+if(NOT rc MATCHES "^[0-9]+$")
+  message(FATAL_ERROR "the program did not exit normally (${rc}): expected error stop")
+endif()
+if(rc EQUAL 0)
+  message(FATAL_ERROR "the program exited with status 0: the failing call did not stop it")
+endif()
+if(out MATCHES "ERROR: returned")
+  message(FATAL_ERROR "the failing call returned to the program")
+endif()
+set(_want "b2b error 4: b2b_segment_eval: unknown curve kind 17")
+string(FIND "${err}" "${_want}" _at)
+if(_at EQUAL -1)
+  message(FATAL_ERROR "stderr lacks \"${_want}\"")
+endif()
+message(STATUS "ok: stopped with status ${rc} and the message")

@@ -1,0 +1,43 @@
+!> A failing call without ierr must stop the program (module b2b's documented
+!> behaviour) with a non-zero exit status and the message on stderr.
+!>
+!> Registered with WILL_FAIL: the non-zero exit is the expected outcome. If
+!> the call wrongly returns, the program prints "ERROR: returned" and exits
+!> with status 0, so that ctest reports the test as failed.
+!>
+!> Without arguments the call has neither ierr nor errmsg; with the argument
+!> "errmsg" it has errmsg but still no ierr (which must stop all the same).
+program ftest_stop_without_ierr
+  use, intrinsic :: iso_c_binding, only: c_double
+  use, intrinsic :: iso_fortran_env, only: output_unit
+  use b2b
+  implicit none
+
+  real(c_double) :: patch(3, 4), x(3, 3)
+  character(len=B2B_ERRMSG_LEN) :: msg
+  character(len=16) :: arg
+  integer :: i
+
+  do i = 1, 4
+    patch(:, i) = [real(i, c_double), 0.5_c_double * i**2, 0.0_c_double]
+  end do
+  x = -7.0_c_double
+  msg = ''
+  arg = ''
+  if (command_argument_count() >= 1) call get_command_argument(1, arg)
+
+  if (arg == 'errmsg') then
+    write (output_unit, '(a)') 'calling b2b_segment_eval with kind 17, errmsg and no ierr'
+    flush (output_unit)
+    call b2b_segment_eval(17, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR, patch, 0.3_c_double, x=x, &
+                          errmsg=msg)
+  else
+    write (output_unit, '(a)') 'calling b2b_segment_eval with kind 17 and no ierr'
+    flush (output_unit)
+    call b2b_segment_eval(17, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR, patch, 0.3_c_double, x=x)
+  end if
+  write (output_unit, '(a)') 'ERROR: returned from a failing b2b_segment_eval without ierr ' // &
+    '(errmsg: "' // trim(msg) // '")'
+  flush (output_unit)
+  stop
+end program ftest_stop_without_ierr
