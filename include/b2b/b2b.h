@@ -65,7 +65,9 @@ enum {
   B2B_ERR_FOLDED = 6,       /* the patch folds back on itself: no tangent direction at a node */
   B2B_ERR_RANGE = 7,        /* a value lies outside its documented range */
   B2B_ERR_NOMEM = 8,        /* memory could not be allocated */
-  B2B_ERR_INTERNAL = 9      /* a bug in b2b: please report it with the message */
+  B2B_ERR_INTERNAL = 9,     /* a bug in b2b: please report it with the message */
+  B2B_ERR_STATE = 10,       /* a handle is not in the state the call needs */
+  B2B_ERR_UNKNOWN_KEY = 11  /* an option key the handle does not know */
 };
 
 /* Size of a message buffer that always holds a whole message. */
@@ -95,5 +97,6 @@ B2B_EXPORT int b2b_abi_version(int *abi);
 #endif
 
 #include <b2b/b2b_curve.h>
+#include <b2b/b2b_pair.h>
 
 #endif /* B2B_H */

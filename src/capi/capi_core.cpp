@@ -15,6 +15,8 @@ const char* b2b_strerror(int status) {
     case B2B_ERR_RANGE: return "a value lies outside its documented range";
     case B2B_ERR_NOMEM: return "out of memory";
     case B2B_ERR_INTERNAL: return "internal error in b2b";
+    case B2B_ERR_STATE: return "the handle is not in the state this call needs";
+    case B2B_ERR_UNKNOWN_KEY: return "unknown option key";
     default: return "unknown status";
   }
 }

@@ -8,44 +8,15 @@
 #include "../curve/segment.hpp"
 #include "../curve/topology.hpp"
 #include "firewall.hpp"
+#include "segment_checks.hpp"
 
+using b2b::capi::check_kind;
+using b2b::capi::check_segment;
 using b2b::capi::guarded;
+using b2b::capi::report_segment_failure;
 using b2b::capi::Reporter;
 
 namespace {
-
-bool known_kind(int kind) {
-  return kind >= B2B_CURVE_LINEAR && kind <= B2B_CURVE_HERMITE_NODAL_WEIGHTED;
-}
-
-bool known_rule(int rule) { return rule >= B2B_END_NEIGHBOUR && rule <= B2B_END_TANGENT; }
-
-int check_kind(const Reporter& r, int kind) {
-  if (!known_kind(kind))
-    return r.fail(B2B_ERR_UNKNOWN_KIND,
-                  "unknown curve kind %d (B2B_CURVE_LINEAR .. B2B_CURVE_HERMITE_NODAL_WEIGHTED "
-                  "are 0 .. 3)",
-                  kind);
-  return B2B_OK;
-}
-
-const char kAxis[] = "xyz";
-
-// Unit direction of a host end tangent; scaled first so that any finite
-// vector, however large or small, normalises without overflow.
-int unit_tangent(const Reporter& r, const double* t, const char* where, double* unit) {
-  for (int i = 0; i < 3; ++i)
-    if (!std::isfinite(t[i]))
-      return r.fail(B2B_ERR_NONFINITE, "the end tangent at the %s node has a non-finite %c (%g)",
-                    where, kAxis[i], t[i]);
-  const double m = std::fmax(std::fabs(t[0]), std::fmax(std::fabs(t[1]), std::fabs(t[2])));
-  if (m == 0.0)
-    return r.fail(B2B_ERR_RANGE, "the end tangent at the %s node is the zero vector", where);
-  double s[3] = {t[0] / m, t[1] / m, t[2] / m};
-  const double n = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-  for (int i = 0; i < 3; ++i) unit[i] = s[i] / n;
-  return B2B_OK;
-}
 
 bool all_finite(const double* v, int n) {
   for (int i = 0; i < n; ++i)
@@ -73,57 +44,15 @@ int b2b_segment_eval(int kind, int start_rule, int end_rule, const double* patch
   const Reporter r("b2b_segment_eval", errmsg, errmsg_len);
   return guarded(r, [&]() -> int {
     if (patch == nullptr) return r.fail(B2B_ERR_NULL, "patch is NULL");
-    if (int st = check_kind(r, kind)) return st;
-    if (!known_rule(start_rule))
-      return r.fail(B2B_ERR_UNKNOWN_KIND, "unknown start_rule %d (B2B_END_* are 0 .. 2)",
-                    start_rule);
-    if (!known_rule(end_rule))
-      return r.fail(B2B_ERR_UNKNOWN_KIND, "unknown end_rule %d (B2B_END_* are 0 .. 2)", end_rule);
-    if (kind == B2B_CURVE_HERMITE_MIDPOINT && start_rule != B2B_END_NEIGHBOUR &&
-        end_rule != B2B_END_NEIGHBOUR)
-      return r.fail(B2B_ERR_RANGE,
-                    "a midpoint segment cannot both start and end its beam (such a beam would "
-                    "have one node); start_rule and end_rule are both beam ends");
+    double unit[6];
+    if (int st = check_segment(r, "", kind, start_rule, end_rule, patch, end_tangents, unit))
+      return st;
     if (!std::isfinite(xi)) return r.fail(B2B_ERR_NONFINITE, "xi is not finite (%g)", xi);
-
-    const unsigned used = b2b::curve::used_slots(kind, start_rule, end_rule);
-    for (int slot = 0; slot < 4; ++slot) {
-      if (!(used & (1u << slot))) continue;
-      for (int i = 0; i < 3; ++i) {
-        const double v = patch[3 * slot + i];
-        if (!std::isfinite(v))
-          return r.fail(B2B_ERR_NONFINITE, "patch node x%d has a non-finite %c coordinate (%g)",
-                        slot + 1, kAxis[i], v);
-        if (std::fabs(v) > B2B_COORD_MAX)
-          return r.fail(B2B_ERR_RANGE,
-                        "patch node x%d has %c = %g, beyond B2B_COORD_MAX (%g)", slot + 1,
-                        kAxis[i], v, B2B_COORD_MAX);
-      }
-    }
-
-    double unit[6] = {0, 0, 0, 0, 0, 0};
-    const bool t0 = b2b::curve::uses_start_tangent(kind, start_rule);
-    const bool t1 = b2b::curve::uses_end_tangent(kind, end_rule);
-    if ((t0 || t1) && end_tangents == nullptr)
-      return r.fail(B2B_ERR_NULL, "end_tangents is NULL but the %s rule is B2B_END_TANGENT",
-                    t0 ? "start" : "end");
-    if (t0)
-      if (int st = unit_tangent(r, end_tangents, "first", unit)) return st;
-    if (t1)
-      if (int st = unit_tangent(r, end_tangents + 3, "last", unit + 3)) return st;
 
     b2b::curve::Segment seg;
     const b2b::curve::Failure f =
         seg.build(kind, start_rule, end_rule, patch, unit, dx != nullptr || d2x != nullptr);
-    if (f.status == B2B_ERR_COINCIDENT)
-      return r.fail(f.status, "patch nodes x%d and x%d coincide (zero-length element)",
-                    f.slot_a + 1, f.slot_b + 1);
-    if (f.status == B2B_ERR_FOLDED)
-      return r.fail(f.status,
-                    "the patch folds back on itself: nodes x%d and x%d (nearly) coincide, so "
-                    "the tangent at x%d has no direction",
-                    f.slot_a + 1, f.slot_b + 1, f.slot_a + 2);
-    if (f.status != B2B_OK) return r.fail(B2B_ERR_INTERNAL, "segment build failed (%d)", f.status);
+    if (f.status != B2B_OK) return report_segment_failure(r, "", f);
 
     double lx[9], ldx[72], ld2x[864];
     if (x) seg.point(xi, lx, lx + 3, lx + 6);

@@ -1,0 +1,161 @@
+/*
+ * b2b contact element: the point-wise beam-to-beam contact of Wriggers and
+ * Zavarise on the smoothed centreline, with its residual and exact tangent.
+ * Included by <b2b/b2b.h>; do not include it on its own.
+ *
+ * Parameters (b2b_params)
+ * -----------------------
+ * An opaque handle: create, set options by key, finalize, then use it from
+ * any number of threads (b2b_pair_eval only reads it). Setting an option
+ * after finalize is B2B_ERR_STATE; so is evaluating with an unfinalized one.
+ *
+ *   key                  type  default      meaning
+ *   "penalty"            real  (required)   normal penalty eps_N >= 0
+ *   "law"                int   B2B_LAW_LINEAR  normal law, B2B_LAW_*
+ *   "regularization_gap" real  (required for B2B_LAW_QUADRATIC) g0 > 0: the
+ *                                           gap at which the force starts
+ *   "parallel_angle"     real  0.5          crossing angle in degrees, in
+ *                                           [0, 90), below which a pair is
+ *                                           B2B_CONTACT_PARALLEL (not evaluated)
+ *   "warm_start"         int   0            1: start the closest-point search
+ *                                           from the history's xi, eta
+ *   "max_iterations"     int   50           closest-point iterations, >= 1
+ *
+ * Normal laws (B2B_LAW_*), f_N >= 0 the compressive normal force, g the gap:
+ *   LINEAR     f_N = eps_N max(0, -g)
+ *   QUADRATIC  C1 regularised: f_N = eps_N (g0/2 - g) for g <= 0,
+ *              eps_N (g0 - g)^2 / (2 g0) for 0 < g < g0, 0 for g >= g0
+ *              (force and its slope continuous; contact starts at g = g0 > 0).
+ *
+ * The pair (b2b_pair_eval)
+ * ------------------------
+ * Two segments, A and B, each as in b2b_segment_eval: segments[0..2] = kind,
+ * start_rule, end_rule of A, segments[3..5] those of B; X[24] the 24 contact
+ * coordinates, A's four patch nodes then B's (x y z each); end_tangents[12]
+ * A's two then B's two (may be NULL unless a rule in force is TANGENT);
+ * radii[2] the cross-section radii of A and B (>= 0).
+ *
+ * Closest points xi, eta minimise |x_A(xi) - x_B(eta)| (safeguarded Newton
+ * from the straight-chord solution, or from the history with "warm_start").
+ * n = (x_A - x_B)/|x_A - x_B| points from B to A, the gap is
+ * g = s |x_A - x_B| - r_A - r_B, where the sign s = -1 if n has flipped
+ * against the history's previous normal (the axes passed through each other
+ * within the step: they are pushed back, not pulled through), else +1, and n
+ * is flipped with it.
+ *
+ * residual[24] is the contact contribution to the host's internal force
+ * vector, the gradient of the contact potential Pi(g) with respect to X:
+ * residual = -f_N dg/dX. tangent (24 x 24, column-major, leading dimension
+ * ldk >= 24; NULL: not computed, which is cheaper) is its exact derivative
+ * d(residual)/dX, including the change of the closest points and the second
+ * derivatives of the smoothed curves; it is symmetric without friction.
+ * Where the pair carries no force both are zero.
+ *
+ * Ownership. A contact point belongs to exactly one pair: a pair owns the
+ * points with -1 <= xi < 1 (and -1 <= eta < 1); a point on the joint
+ * xi = 1 belongs to the next segment (where it is xi = -1), except at the end
+ * of a beam (end_rule not B2B_END_NEIGHBOUR), where the segment keeps it.
+ * "On the joint" means within 1e-13 segment lengths of it, so two pairs that
+ * compute the same joint point with different rounding still agree.
+ *
+ * History. hist_old and hist_new are host-owned arrays of
+ * b2b_params_history_size() doubles: hist_old is read (a zero-filled array is
+ * a valid fresh history), hist_new written (it may be the same array). To
+ * commit a converged step copy hist_new into hist_old; to cut back a failed
+ * step do not. The layout is private and may grow in later versions; only its
+ * length is part of the ABI, and a history of the wrong length is rejected.
+ *
+ * Contact status (B2B_CONTACT_*), a physical outcome, not an error (the call
+ * returns B2B_OK):
+ *   OPEN           closest points owned by this pair, no force (gap open)
+ *   ACTIVE         owned, force > 0
+ *   OUTSIDE        the closest point is not this pair's: it lies on a
+ *                  neighbouring segment (xi or eta outside [-1, 1), see
+ *                  ownership) or beyond a beam end; no force
+ *   PARALLEL       crossing angle below "parallel_angle" or a singular
+ *                  closest-point problem: point-wise contact is not defined;
+ *                  no force
+ *   NOT_CONVERGED  the closest-point search did not converge; no force
+ *   NO_NORMAL      the axes intersect exactly and there is no previous
+ *                  normal in the history; no force
+ * With exactly intersecting axes and a previous normal, that normal is used
+ * (the tangent then omits the normal's rotation, which is unbounded there).
+ *
+ * info[B2B_PAIR_INFO_LEN]: see B2B_INFO_*; unused entries are zero.
+ *
+ * Bad input: B2B_ERR_NULL, B2B_ERR_STATE (params not finalized),
+ * B2B_ERR_UNKNOWN_KIND, B2B_ERR_NONFINITE (coordinates, tangents, radii,
+ * history), B2B_ERR_RANGE (negative radius, coordinate beyond B2B_COORD_MAX,
+ * history not written by b2b), B2B_ERR_SIZE (history length, ldk < 24),
+ * B2B_ERR_COINCIDENT and B2B_ERR_FOLDED (degenerate patches, as for
+ * b2b_segment_eval). The message names the beam (A or B).
+ */
+#ifndef B2B_PAIR_H
+#define B2B_PAIR_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct b2b_params b2b_params;
+
+/* Normal laws. Values are fixed. */
+enum { B2B_LAW_LINEAR = 0, B2B_LAW_QUADRATIC = 1 };
+
+/* Contact status of a pair. Values are fixed. */
+enum {
+  B2B_CONTACT_OPEN = 0,
+  B2B_CONTACT_ACTIVE = 1,
+  B2B_CONTACT_OUTSIDE = 2,
+  B2B_CONTACT_PARALLEL = 3,
+  B2B_CONTACT_NOT_CONVERGED = 4,
+  B2B_CONTACT_NO_NORMAL = 5
+};
+
+/* Entries of the info array of b2b_pair_eval. Values are fixed. */
+enum {
+  B2B_INFO_XI = 0,              /* closest-point parameter on A */
+  B2B_INFO_ETA = 1,             /* closest-point parameter on B */
+  B2B_INFO_POINT_A = 2,         /* x_A(xi), 3 entries */
+  B2B_INFO_POINT_B = 5,         /* x_B(eta), 3 entries */
+  B2B_INFO_NORMAL = 8,          /* unit normal from B to A (sign-tracked), 3 entries */
+  B2B_INFO_GAP = 11,            /* gap g */
+  B2B_INFO_NORMAL_FORCE = 12,   /* f_N >= 0 */
+  B2B_INFO_ENERGY = 13,         /* contact potential Pi(g) */
+  B2B_INFO_ANGLE = 14,          /* crossing angle of the tangents, degrees in [0, 90] */
+  B2B_INFO_ITERATIONS = 15,     /* closest-point iterations used */
+  B2B_INFO_SYMMETRIC = 16       /* 1 if the tangent is symmetric, 0 if not */
+};
+#define B2B_PAIR_INFO_LEN 32 /* entries 17..31 are reserved (written as 0) */
+#define B2B_PAIR_NDOF 24
+
+B2B_EXPORT int b2b_params_create(b2b_params **params, char *errmsg, int errmsg_len);
+/* Frees the handle and sets *params to NULL; NULL or *params == NULL is a no-op. */
+B2B_EXPORT int b2b_params_destroy(b2b_params **params);
+B2B_EXPORT int b2b_params_set_real(b2b_params *params, const char *key, double value,
+                                   char *errmsg, int errmsg_len);
+B2B_EXPORT int b2b_params_set_int(b2b_params *params, const char *key, int value,
+                                  char *errmsg, int errmsg_len);
+B2B_EXPORT int b2b_params_get_real(const b2b_params *params, const char *key, double *value,
+                                   char *errmsg, int errmsg_len);
+B2B_EXPORT int b2b_params_get_int(const b2b_params *params, const char *key, int *value,
+                                  char *errmsg, int errmsg_len);
+/* Checks the options together and makes the handle read-only. */
+B2B_EXPORT int b2b_params_finalize(b2b_params *params, char *errmsg, int errmsg_len);
+/* Number of doubles of a pair history for this (finalized) parameter set. */
+B2B_EXPORT int b2b_params_history_size(const b2b_params *params, int *n, char *errmsg,
+                                       int errmsg_len);
+
+/* Evaluates one contact pair (see above). */
+B2B_EXPORT int b2b_pair_eval(const b2b_params *params, const int segments[6],
+                             const double X[24], const double end_tangents[12],
+                             const double radii[2], const double *hist_old, double *hist_new,
+                             int hist_len, int *contact_status, double info[32],
+                             double residual[24], double *tangent, int ldk, char *errmsg,
+                             int errmsg_len);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* B2B_PAIR_H */

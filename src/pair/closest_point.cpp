@@ -1,0 +1,119 @@
+#include "closest_point.hpp"
+
+#include <cfloat>
+#include <cmath>
+
+#include "../curve/vec3.hpp"
+
+namespace b2b {
+namespace pair {
+namespace {
+
+using curve::dot3;
+using curve::norm3;
+using curve::sub3;
+
+constexpr double kBox = 3.0;       // iterates stay in [-3, 3]: the cubics extend, but not forever
+constexpr double kMaxStep = 1.0;   // at most half a segment per iteration
+constexpr double kArmijo = 1e-4;
+
+double clamp(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+double half_distance_squared(const curve::Segment& A, const curve::Segment& B, double xi,
+                             double eta) {
+  double xa[3], xb[3], d[3];
+  A.point(xi, xa, nullptr, nullptr);
+  B.point(eta, xb, nullptr, nullptr);
+  sub3(xa, xb, d);
+  return 0.5 * dot3(d, d);
+}
+
+}  // namespace
+
+void chord_start(const double* a0, const double* a1, const double* b0, const double* b1,
+                 double* xi, double* eta) {
+  // Chord: x = (p0 + p1)/2 + s (p1 - p0)/2, s in [-1, 1].
+  double t1[3], t2[3], c[3];
+  for (int i = 0; i < 3; ++i) {
+    t1[i] = a1[i] - a0[i];
+    t2[i] = b1[i] - b0[i];
+    c[i] = (a0[i] + a1[i]) - (b0[i] + b1[i]);
+  }
+  const double t11 = dot3(t1, t1), t22 = dot3(t2, t2), t12 = dot3(t1, t2);
+  const double D = t11 * t22 - t12 * t12;
+  if (!(D > 1e-10 * t11 * t22)) {  // sin^2 of the angle below 1e-10: no unique answer
+    *xi = *eta = 0.0;
+    return;
+  }
+  const double ct1 = dot3(c, t1), ct2 = dot3(c, t2);
+  *xi = clamp((ct2 * t12 - ct1 * t22) / D, -1.0, 1.0);
+  *eta = clamp((t11 * ct2 - t12 * ct1) / D, -1.0, 1.0);
+}
+
+ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, double xi,
+                             double eta, int max_iterations, double tol_length) {
+  ClosestPoints r;
+  for (int it = 0;; ++it) {
+    double xa[3], xad[3], xadd[3], xb[3], xbd[3], xbdd[3], d[3];
+    A.point(xi, xa, xad, xadd);
+    B.point(eta, xb, xbd, xbdd);
+    sub3(xa, xb, d);
+    // Gradient of phi; in length units after dividing by the speeds.
+    const double g1 = dot3(d, xad), g2 = -dot3(d, xbd);
+    const double na = norm3(xad), nb = norm3(xbd);
+    const double tol = tol_length + 64.0 * DBL_EPSILON * norm3(d);
+    if (std::fabs(g1) <= tol * na && std::fabs(g2) <= tol * nb) {
+      r.converged = true;
+      r.iterations = it;
+      break;
+    }
+    if (it == max_iterations) {
+      r.iterations = it;
+      break;
+    }
+    // Hessian of phi, shifted to positive definite where it is not (far from
+    // the solution, or a curvature term d.x'' that dominates).
+    double h11 = dot3(xad, xad) + dot3(d, xadd);
+    double h22 = dot3(xbd, xbd) - dot3(d, xbdd);
+    const double h12 = -dot3(xad, xbd);
+    const double scale = na * na + nb * nb;
+    const double mean = 0.5 * (h11 + h22);
+    const double radius = std::sqrt(0.25 * (h11 - h22) * (h11 - h22) + h12 * h12);
+    const double lambda_min = mean - radius;
+    const double floor = 1e-6 * scale;
+    if (lambda_min < floor) {
+      h11 += floor - lambda_min;
+      h22 += floor - lambda_min;
+    }
+    const double det = h11 * h22 - h12 * h12;
+    double s1 = -(h22 * g1 - h12 * g2) / det;
+    double s2 = -(h11 * g2 - h12 * g1) / det;
+    const double m = std::fmax(std::fabs(s1), std::fabs(s2));
+    if (m > kMaxStep) {
+      s1 *= kMaxStep / m;
+      s2 *= kMaxStep / m;
+    }
+    // Far from the solution, backtrack until phi decreases enough; close to
+    // it, the full Newton step converges quadratically and phi differences
+    // would be lost in rounding.
+    double alpha = 1.0;
+    if (m > 1e-3) {
+      const double phi = 0.5 * dot3(d, d);
+      const double slope = g1 * s1 + g2 * s2;  // < 0: a descent direction
+      for (int k = 0; k < 40; ++k) {
+        const double trial = half_distance_squared(A, B, clamp(xi + alpha * s1, -kBox, kBox),
+                                                   clamp(eta + alpha * s2, -kBox, kBox));
+        if (trial <= phi + kArmijo * alpha * slope) break;
+        alpha *= 0.5;
+      }
+    }
+    xi = clamp(xi + alpha * s1, -kBox, kBox);
+    eta = clamp(eta + alpha * s2, -kBox, kBox);
+  }
+  r.xi = xi;
+  r.eta = eta;
+  return r;
+}
+
+}  // namespace pair
+}  // namespace b2b

@@ -1,0 +1,32 @@
+// Closest points of two smoothed segments: minimise phi = |x_A(xi) - x_B(eta)|^2 / 2
+// by Newton's method on its gradient (the two orthogonality conditions),
+// safeguarded so that it converges from any start in the patch: the Hessian
+// is shifted to positive definite where it is not, steps are limited to one
+// segment half-length, and far from the solution a backtracking line search
+// enforces descent of phi.
+#pragma once
+
+#include "../curve/segment.hpp"
+
+namespace b2b {
+namespace pair {
+
+struct ClosestPoints {
+  double xi = 0.0, eta = 0.0;
+  int iterations = 0;
+  bool converged = false;
+};
+
+// Parameters of the closest points of the straight chords between the end
+// points a0-a1 and b0-b1 of both segments (Wriggers and Zavarise 1997),
+// clamped to [-1, 1]; (0, 0) when the chords are (nearly) parallel.
+void chord_start(const double* a0, const double* a1, const double* b0, const double* b1,
+                 double* xi, double* eta);
+
+// Newton from (xi, eta). tol_length: the converged gradient, in length
+// units (the components of x_A - x_B along both tangents), must be below it.
+ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, double xi,
+                             double eta, int max_iterations, double tol_length);
+
+}  // namespace pair
+}  // namespace b2b

@@ -1,0 +1,45 @@
+// The point-wise beam-to-beam contact element (Wriggers and Zavarise 1997) on
+// smoothed centrelines: closest points, ownership, sign-tracked normal and
+// gap, normal law, residual and exact tangent (contact-notes.md 1.1-1.4).
+// A pure function of its inputs: no state, no allocation.
+#pragma once
+
+#include "../curve/segment.hpp"
+#include "history.hpp"
+#include "params.hpp"
+
+namespace b2b {
+namespace pair {
+
+constexpr int kNdof = 24;
+constexpr int kInfoLength = 32;
+
+struct SegmentInput {
+  int kind, start_rule, end_rule;
+  const double* X;              // 12 patch coordinates
+  const double* unit_tangents;  // 6: unit host end tangents (read where a rule is TANGENT)
+  double radius;
+};
+
+struct PairResult {
+  int contact_status = 0;            // B2B_CONTACT_*
+  double info[kInfoLength] = {0};    // B2B_INFO_*
+  double residual[kNdof] = {0};
+  double history[kHistoryLength] = {0};
+};
+
+// A refused pair: the status (B2B_ERR_COINCIDENT or _FOLDED) and which beam
+// (0 = A, 1 = B) and patch slots.
+struct PairFailure {
+  int status = 0;
+  int beam = -1;
+  curve::Failure segment;
+};
+
+// Inputs are valid (checked at the C boundary). K: 24 x 24, column-major,
+// leading dimension 24, or null for no tangent.
+PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const SegmentInput& B,
+                          const double* hist_old, PairResult& out, double* K);
+
+}  // namespace pair
+}  // namespace b2b

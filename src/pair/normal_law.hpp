@@ -1,0 +1,46 @@
+// Normal contact laws: force f_N(g) >= 0 (compressive), its slope df_N/dg and
+// the potential Pi(g) = integral from g to infinity of f_N, so that
+// dPi/dg = -f_N (contact-notes.md 1.2).
+#pragma once
+
+#include <b2b/b2b.h>
+
+#include "params.hpp"
+
+namespace b2b {
+namespace pair {
+
+struct LawValue {
+  double force = 0.0;   // f_N
+  double slope = 0.0;   // df_N/dg
+  double energy = 0.0;  // Pi
+};
+
+inline LawValue normal_law(const Params& p, double g) {
+  LawValue v;
+  const double eps = p.penalty;
+  if (p.law == B2B_LAW_LINEAR) {
+    if (g < 0.0) {
+      v.force = -eps * g;
+      v.slope = -eps;
+      v.energy = 0.5 * eps * g * g;
+    }
+    return v;
+  }
+  // B2B_LAW_QUADRATIC (LinPosQuadPen): linear for g <= 0, quadratic up to g0.
+  const double g0 = p.regularization_gap;
+  if (g <= 0.0) {
+    v.force = eps * (0.5 * g0 - g);
+    v.slope = -eps;
+    v.energy = eps * (g0 * g0 / 6.0 - 0.5 * g0 * g + 0.5 * g * g);
+  } else if (g < g0) {
+    const double h = g0 - g;
+    v.force = eps * h * h / (2.0 * g0);
+    v.slope = -eps * h / g0;
+    v.energy = eps * h * h * h / (6.0 * g0);
+  }
+  return v;
+}
+
+}  // namespace pair
+}  // namespace b2b

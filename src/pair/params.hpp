@@ -1,0 +1,23 @@
+// Contact parameters of the pair layer: what b2b_params holds. Validated key
+// by key when set and together when finalized; read-only afterwards.
+#pragma once
+
+namespace b2b {
+namespace pair {
+
+struct Params {
+  double penalty = 0.0;
+  bool penalty_set = false;
+  int law = 0;  // B2B_LAW_*
+  double regularization_gap = 0.0;
+  bool regularization_gap_set = false;
+  double parallel_angle_deg = 0.5;
+  int warm_start = 0;
+  int max_iterations = 50;
+  bool finalized = false;
+  // derived by finalize
+  double sin_parallel_angle = 0.0;
+};
+
+}  // namespace pair
+}  // namespace b2b

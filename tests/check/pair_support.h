@@ -1,0 +1,29 @@
+/* Helpers of the pair suites: parameter handles and generated crossings. */
+#ifndef B2B_PAIR_SUPPORT_H
+#define B2B_PAIR_SUPPORT_H
+
+#include "test_support.h"
+
+/* A finalized parameter set (fails the test on error). g0 is used by the
+ * quadratic law only. Destroy with b2b_params_destroy. */
+b2b_params *tst_params(int law, double penalty, double g0);
+
+typedef struct {
+  int kind[2], start_rule[2], end_rule[2];
+  double radius[2];
+} tst_pair_spec;
+
+/* The 24 coordinates of a crossing: two random curved patches (turning up to
+ * max_turn per node), placed so that at parameters xi_star on A and eta_star
+ * on B the tangents cross at angle_deg and the axes are dist apart along
+ * their common normal. Unused slots are NaN. */
+void tst_crossing(tst_rng *rng, const tst_pair_spec *spec, double max_turn, double angle_deg,
+                  double xi_star, double eta_star, double dist, double X[24]);
+
+/* b2b_pair_eval with a fresh history unless hist is given; fails the test
+ * unless it returns B2B_OK. tangent may be NULL. Returns the contact status. */
+int tst_pair(const b2b_params *params, const tst_pair_spec *spec, const double X[24],
+             const double *hist_old, double *hist_new, double info[32], double residual[24],
+             double *tangent);
+
+#endif
