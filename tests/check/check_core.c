@@ -7,7 +7,8 @@
 
 #include "test_support.h"
 
-#define N_CODES 10 /* B2B_OK .. B2B_ERR_INTERNAL */
+#define N_CODES 12 /* B2B_OK .. B2B_ERR_UNKNOWN_KEY */
+#define LAST_CODE B2B_ERR_UNKNOWN_KEY
 
 /* The version macros must also work in the preprocessor. */
 #if !B2B_VERSION_GE(0, 0, 0)
@@ -23,7 +24,7 @@
 /* ---------------------------------------------------------------- strerror */
 
 START_TEST(test_strerror_known_codes) {
-  for (int code = B2B_OK; code <= B2B_ERR_INTERNAL; ++code) {
+  for (int code = B2B_OK; code <= LAST_CODE; ++code) {
     const char *s = b2b_strerror(code);
     ck_assert_msg(s != NULL, "b2b_strerror(%d) is NULL", code);
     ck_assert_msg(s[0] != '\0', "b2b_strerror(%d) is empty", code);
@@ -37,8 +38,8 @@ START_TEST(test_strerror_known_codes) {
 END_TEST
 
 START_TEST(test_strerror_distinct) {
-  for (int a = B2B_OK; a <= B2B_ERR_INTERNAL; ++a)
-    for (int b = a + 1; b <= B2B_ERR_INTERNAL; ++b)
+  for (int a = B2B_OK; a <= LAST_CODE; ++a)
+    for (int b = a + 1; b <= LAST_CODE; ++b)
       ck_assert_msg(strcmp(b2b_strerror(a), b2b_strerror(b)) != 0,
                     "b2b_strerror(%d) and b2b_strerror(%d) are both \"%s\"", a, b,
                     b2b_strerror(a));
@@ -54,7 +55,8 @@ START_TEST(test_strerror_names_the_problem) {
                 {B2B_ERR_SIZE, "short"},       {B2B_ERR_NONFINITE, "infinite"},
                 {B2B_ERR_UNKNOWN_KIND, "kind"}, {B2B_ERR_COINCIDENT, "coincide"},
                 {B2B_ERR_FOLDED, "folds"},     {B2B_ERR_RANGE, "range"},
-                {B2B_ERR_NOMEM, "memory"},     {B2B_ERR_INTERNAL, "internal"}};
+                {B2B_ERR_NOMEM, "memory"},     {B2B_ERR_INTERNAL, "internal"},
+                {B2B_ERR_STATE, "state"},      {B2B_ERR_UNKNOWN_KEY, "key"}};
   ck_assert_int_eq((int)(sizeof expect / sizeof expect[0]), N_CODES);
   for (int k = 0; k < N_CODES; ++k)
     ck_assert_msg(strstr(b2b_strerror(expect[k].code), expect[k].word) != NULL,
@@ -64,13 +66,13 @@ START_TEST(test_strerror_names_the_problem) {
 END_TEST
 
 START_TEST(test_strerror_unknown_codes) {
-  const int unknown[] = {99, -1, B2B_ERR_INTERNAL + 1, 1000, INT_MAX, INT_MIN};
+  const int unknown[] = {99, -1, LAST_CODE + 1, 1000, INT_MAX, INT_MIN};
   for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; ++k) {
     const char *s = b2b_strerror(unknown[k]);
     ck_assert_msg(s != NULL, "b2b_strerror(%d) is NULL", unknown[k]);
     ck_assert_msg(strstr(s, "unknown status") != NULL,
                   "b2b_strerror(%d) = \"%s\", expected \"unknown status\"", unknown[k], s);
-    for (int code = B2B_OK; code <= B2B_ERR_INTERNAL; ++code)
+    for (int code = B2B_OK; code <= LAST_CODE; ++code)
       ck_assert_msg(strcmp(s, b2b_strerror(code)) != 0,
                     "b2b_strerror(%d) has the name of the known code %d", unknown[k], code);
   }
@@ -149,6 +151,8 @@ START_TEST(test_status_values) {
   ck_assert_int_eq(B2B_ERR_RANGE, 7);
   ck_assert_int_eq(B2B_ERR_NOMEM, 8);
   ck_assert_int_eq(B2B_ERR_INTERNAL, 9);
+  ck_assert_int_eq(B2B_ERR_STATE, 10);
+  ck_assert_int_eq(B2B_ERR_UNKNOWN_KEY, 11);
 }
 END_TEST
 
