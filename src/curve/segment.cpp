@@ -1,5 +1,6 @@
 #include "segment.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -21,8 +22,8 @@ bool coincident(const double* X, int sa, int sb) {
   double d[3];
   sub3(xb, xa, d);
   const double tol =
-      std::fmax(B2B_LENGTH_MIN, 4.0 * DBL_EPSILON * std::fmax(max_abs3(xa), max_abs3(xb)));
-  return !(norm3(d) > tol);
+      std::max(B2B_LENGTH_MIN, 4.0 * DBL_EPSILON * std::max(max_abs3(xa), max_abs3(xb)));
+  return !(dot3(d, d) > tol * tol);
 }
 
 bool is_nodal(int kind) {
@@ -225,19 +226,35 @@ void Segment::jacobians(double xi, double* P, double* Pd) const {
   }
 }
 
-void Segment::contracted_hessians(double xi, const double* w, double* Hx, double* Hxd) const {
-  std::memset(Hx, 0, 144 * sizeof(double));
-  std::memset(Hxd, 0, 144 * sizeof(double));
+void Segment::add_contracted_hessian(double xi, const double* w, double s, double* H,
+                                     int ld) const {
   if (linear_in_X()) return;
   const HermiteBasis hb(xi);
-  double H[144];
+  for (int k = 1; k < 4; k += 2)
+    if (term_[k].nonlinear) term_[k].tangent.add_contracted_hessian(w, s * hb.h[k], H, ld);
+}
+
+void Segment::contracted_hessians(double xi, const double* w, double* Hx, double* Hxd) const {
+  std::memset(Hx, 0, 144 * sizeof(double));
+  if (Hxd) std::memset(Hxd, 0, 144 * sizeof(double));
+  if (linear_in_X()) return;
+  const HermiteBasis hb(xi);
   for (int k = 1; k < 4; k += 2) {
     if (!term_[k].nonlinear) continue;
-    term_[k].tangent.contracted_hessian(w, H);
-    for (int m = 0; m < 144; ++m) {
-      Hx[m] += hb.h[k] * H[m];
-      Hxd[m] += hb.dh[k] * H[m];
-    }
+    term_[k].tangent.add_contracted_hessian(w, hb.h[k], Hx, 12);
+    if (Hxd) term_[k].tangent.add_contracted_hessian(w, hb.dh[k], Hxd, 12);
+  }
+  // Every term is symmetric, but its blocks are summed in different orders
+  // for (a,b) and (b,a): average the triangles so that hosts (and the
+  // documentation) can rely on exact symmetry.
+  for (double* H : {Hx, Hxd}) {
+    if (!H) continue;
+    for (int j = 0; j < 12; ++j)
+      for (int i = j + 1; i < 12; ++i) {
+        const double m = 0.5 * (H[i + 12 * j] + H[j + 12 * i]);
+        H[i + 12 * j] = m;
+        H[j + 12 * i] = m;
+      }
   }
 }
 

@@ -41,8 +41,15 @@ class Segment {
   void point(double xi, double* x, double* xd, double* xdd) const;
   // P = dx/dX and Pd = d(dx/dxi)/dX, 3x12 column-major each.
   void jacobians(double xi, double* P, double* Pd) const;
-  // Hx = w . d2x/dX2 and Hxd = w . d2(dx/dxi)/dX2, 12x12 column-major each.
+  // Hx = w . d2x/dX2 and Hxd = w . d2(dx/dxi)/dX2, 12x12 column-major each,
+  // exactly symmetric; Hxd may be null (not computed).
   void contracted_hessians(double xi, const double* w, double* Hx, double* Hxd) const;
+  // H += s * (w . d2x/dX2): a 12x12 block with leading dimension ld,
+  // symmetric up to rounding (the contact element mirrors its tangent).
+  void add_contracted_hessian(double xi, const double* w, double s, double* H, int ld) const;
+  // The end points x(-1) and x(1) (available after build, at no cost).
+  const double* start_point() const { return term_[0].value; }
+  const double* end_point() const { return term_[2].value; }
   // True when the segment is linear in X (all second derivatives vanish).
   bool linear_in_X() const { return !term_[1].nonlinear && !term_[3].nonlinear; }
 

@@ -10,27 +10,62 @@ namespace b2b {
 namespace curve {
 namespace {
 
-// H[3*sa + i, 3*sb + j] += s * delta_ij  (a scaled identity block)
-inline void add_identity_block(double* H, int sa, int sb, double s) {
-  for (int i = 0; i < 3; ++i) H[(3 * sa + i) + 12 * (3 * sb + i)] += s;
-}
+// The helpers below copy their small operands into locals first: H could
+// alias them as far as the compiler knows, which would force a reload after
+// every store and keep the loops from being unrolled and vectorised.
 
-// H[3*sa + i, 3*sb + j] += s * B_ij with B symmetric 3x3 (row-major = col-major)
-inline void add_block(double* H, int sa, int sb, const double* B, double s) {
+// H[3*sa + i, 3*sb + j] += B_ij (B column-major 3x3; H leading dimension ld)
+inline void add_block(double* H, int ld, int sa, int sb, const double* B) {
+  double b[9];
+  for (int k = 0; k < 9; ++k) b[k] = B[k];
+  double* h = H + 3 * sa + 3 * ld * sb;
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) H[(3 * sa + i) + 12 * (3 * sb + j)] += s * B[i + 3 * j];
+    for (int i = 0; i < 3; ++i) h[i + ld * j] += b[i + 3 * j];
 }
 
-// H += f (x) g + g (x) f for 12-vectors f, g
-inline void add_sym_outer(double* H, const double* f, const double* g) {
-  for (int j = 0; j < 12; ++j)
-    for (int i = 0; i < 12; ++i) H[i + 12 * j] += f[i] * g[j] + g[i] * f[j];
+// H[3*sa + i, 3*sb + j] += s * delta_ij
+inline void add_identity_block(double* H, int ld, int sa, int sb, double s) {
+  for (int i = 0; i < 3; ++i) H[(3 * sa + i) + ld * (3 * sb + i)] += s;
 }
 
-// Projector I - e e^T
+// Block (sa, sb) += s f g^T and block (sb, sa) += s g f^T (a symmetric pair;
+// for sa == sb the block receives both).
+inline void add_sym_outer(double* H, int ld, int sa, const double* f, int sb, const double* g,
+                          double s) {
+  const double sf[3] = {s * f[0], s * f[1], s * f[2]};
+  const double gg[3] = {g[0], g[1], g[2]};
+  double* hab = H + 3 * sa + 3 * ld * sb;
+  double* hba = H + 3 * sb + 3 * ld * sa;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      hab[i + ld * j] += sf[i] * gg[j];
+      hba[i + ld * j] += gg[i] * sf[j];
+    }
+}
+
+// Projector I - e e^T (column-major; symmetric)
 inline void projector(const double* e, double* Q) {
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) Q[i + 3 * j] = (i == j ? 1.0 : 0.0) - e[i] * e[j];
+}
+
+// out = A^T v (A column-major 3x3)
+inline void mat_t_vec(const double* A, const double* v, double* out) {
+  for (int j = 0; j < 3; ++j) out[j] = dot3(A + 3 * j, v);
+}
+
+// out = s A^T MB (all 3x3 column-major), MB = M B computed by the caller once
+// per B
+inline void atmb(const double* A, const double* MB, double s, double* out) {
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) out[i + 3 * j] = s * dot3(A + 3 * i, MB + 3 * j);
+}
+
+// out = M B (3x3 column-major)
+inline void matmul3(const double* M, const double* B, double* out) {
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      out[i + 3 * j] = M[i] * B[3 * j] + M[i + 3] * B[1 + 3 * j] + M[i + 6] * B[2 + 3 * j];
 }
 
 }  // namespace
@@ -77,14 +112,18 @@ bool TangentTerm::evaluate(const double* X) {
 }
 
 void TangentTerm::jacobian() {
-  std::memset(du_, 0, sizeof du_);
+  // d(u~)/dx_s blocks
   switch (dir) {
     case Dir::Constant:
+      n_slots_ = 0;
       break;
     case Dir::Chord:
-      for (int i = 0; i < 3; ++i) {
-        du_[i + 3 * (3 * a + i)] = -1.0;
-        du_[i + 3 * (3 * c + i)] = 1.0;
+      n_slots_ = 2;
+      slot_[0] = a;
+      slot_[1] = c;
+      for (int k = 0; k < 9; ++k) {
+        du_[0][k] = (k % 4 == 0) ? -1.0 : 0.0;
+        du_[1][k] = (k % 4 == 0) ? 1.0 : 0.0;
       }
       break;
     case Dir::Weighted:
@@ -92,23 +131,30 @@ void TangentTerm::jacobian() {
       // du/dx_a = -s1 I - 2 w2 w1^T
       // du/dx_b = (s1 - s2) I - 2 w1 w2^T + 2 w2 w1^T
       // du/dx_c = s2 I + 2 w1 w2^T         (all scaled by k0)
-      for (int j = 0; j < 3; ++j) {
+      n_slots_ = 3;
+      slot_[0] = a;
+      slot_[1] = b;
+      slot_[2] = c;
+      for (int j = 0; j < 3; ++j)
         for (int i = 0; i < 3; ++i) {
           const double id = (i == j) ? 1.0 : 0.0;
-          du_[i + 3 * (3 * a + j)] = k0_ * (-s1_ * id - 2.0 * w2_[i] * w1_[j]);
-          du_[i + 3 * (3 * b + j)] =
+          du_[0][i + 3 * j] = k0_ * (-s1_ * id - 2.0 * w2_[i] * w1_[j]);
+          du_[1][i + 3 * j] =
               k0_ * ((s1_ - s2_) * id - 2.0 * w1_[i] * w2_[j] + 2.0 * w2_[i] * w1_[j]);
-          du_[i + 3 * (3 * c + j)] = k0_ * (s2_ * id + 2.0 * w1_[i] * w2_[j]);
+          du_[2][i + 3 * j] = k0_ * (s2_ * id + 2.0 * w1_[i] * w2_[j]);
         }
-      }
       break;
   }
   // dT = sigma (uhat (x) dL + L duhat),  duhat = (I - uhat uhat^T) du / r
   std::memset(jac, 0, sizeof jac);
-  for (int col = 0; col < 12; ++col) {
-    const double* v = du_ + 3 * col;
-    const double uv = dot3(uhat_, v);
-    for (int i = 0; i < 3; ++i) jac[i + 3 * col] = sigma * L_ * (v[i] - uhat_[i] * uv) / r_;
+  const double s = sigma * L_ / r_;
+  for (int k = 0; k < n_slots_; ++k) {
+    const double* D = du_[k];
+    for (int j = 0; j < 3; ++j) {
+      const double* v = D + 3 * j;
+      const double uv = dot3(uhat_, v);
+      for (int i = 0; i < 3; ++i) jac[i + 3 * (3 * slot_[k] + j)] += s * (v[i] - uhat_[i] * uv);
+    }
   }
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) {
@@ -117,35 +163,33 @@ void TangentTerm::jacobian() {
     }
 }
 
-void TangentTerm::accumulate_hessian(const double* w, double* H) const {
-  std::memset(H, 0, 144 * sizeof(double));
-
+void TangentTerm::add_contracted_hessian(const double* w, double s, double* H, int ld) const {
   // w . d2T = sigma [ (w.uhat) d2L + dL (x) g + g (x) dL + L w.d2uhat ]
   const double wu = dot3(w, uhat_);
 
   // d2L: +QL/L on the (p,p), (q,q) blocks, -QL/L on (p,q), (q,p).
-  double QL[9];
+  double QL[9], B[9];
   projector(eL_, QL);
-  const double sL = sigma * wu / L_;
-  add_block(H, p, p, QL, sL);
-  add_block(H, q, q, QL, sL);
-  add_block(H, p, q, QL, -sL);
-  add_block(H, q, p, QL, -sL);
-
+  const double sL = s * sigma * wu / L_;
+  for (int k = 0; k < 9; ++k) B[k] = sL * QL[k];
+  add_block(H, ld, p, p, B);
+  add_block(H, ld, q, q, B);
+  for (int k = 0; k < 9; ++k) B[k] = -B[k];
+  add_block(H, ld, p, q, B);
+  add_block(H, ld, q, p, B);
   if (dir == Dir::Constant) return;
 
-  // cw = (I - uhat uhat^T) w / r, so that g = duhat^T w = du^T cw.
+  // cw = (I - uhat uhat^T) w / r, so that g = duhat^T w = du^T cw:
+  // g on slot s is du_s^T cw; dL is -eL on p, +eL on q.
   double cw[3];
   for (int i = 0; i < 3; ++i) cw[i] = (w[i] - uhat_[i] * wu) / r_;
-  double g[12], dL[12] = {0};
-  for (int col = 0; col < 12; ++col) g[col] = dot3(du_ + 3 * col, cw);
-  for (int i = 0; i < 3; ++i) {
-    dL[3 * q + i] = eL_[i];
-    dL[3 * p + i] = -eL_[i];
+  double mL[3] = {-eL_[0], -eL_[1], -eL_[2]};
+  for (int k = 0; k < n_slots_; ++k) {
+    double g[3];
+    mat_t_vec(du_[k], cw, g);
+    add_sym_outer(H, ld, q, eL_, slot_[k], g, s * sigma);
+    add_sym_outer(H, ld, p, mL, slot_[k], g, s * sigma);
   }
-  double tmp[144] = {0};
-  add_sym_outer(tmp, dL, g);
-  for (int k = 0; k < 144; ++k) H[k] += sigma * tmp[k];
 
   // w . d2uhat = du^T M du + cw . d2u~, with
   // M = -[(uhat.w) Q + uhat (Qw)^T + (Qw) uhat^T] / r^2 = -[wu Q / r + uhat cw^T + cw uhat^T] / r
@@ -154,57 +198,52 @@ void TangentTerm::accumulate_hessian(const double* w, double* H) const {
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
       M[i + 3 * j] = -(wu * Qu[i + 3 * j] / r_ + uhat_[i] * cw[j] + cw[i] * uhat_[j]) / r_;
-  double Mdu[36];
-  for (int col = 0; col < 12; ++col)
-    for (int i = 0; i < 3; ++i)
-      Mdu[i + 3 * col] = M[i] * du_[3 * col] + M[i + 3] * du_[1 + 3 * col] + M[i + 6] * du_[2 + 3 * col];
-  const double sLL = sigma * L_;
-  for (int j = 0; j < 12; ++j)
-    for (int i = 0; i < 12; ++i) H[i + 12 * j] += sLL * dot3(du_ + 3 * i, Mdu + 3 * j);
-
-  if (dir != Dir::Weighted) return;  // the chord is linear in X: d2u = 0
+  const double sLL = s * sigma * L_;
+  if (dir == Dir::Chord) {  // du blocks are -I (slot a) and +I (slot c)
+    for (int k = 0; k < 9; ++k) B[k] = sLL * M[k];
+    add_block(H, ld, a, a, B);
+    add_block(H, ld, c, c, B);
+    for (int k = 0; k < 9; ++k) B[k] = -B[k];
+    add_block(H, ld, a, c, B);
+    add_block(H, ld, c, a, B);
+    return;  // the chord is linear in X: d2u = 0
+  }
+  for (int l = 0; l < n_slots_; ++l) {
+    double MD[9];
+    matmul3(M, du_[l], MD);
+    for (int k = 0; k < n_slots_; ++k) {
+      atmb(du_[k], MD, sLL, B);
+      add_block(H, ld, slot_[k], slot_[l], B);
+    }
+  }
 
   // cw . d2u, u = s1 w1 + s2 w2 (times k0):
   //   (cw.w1) d2s1 + sym((dw1^T cw) (x) ds1) + (cw.w2) d2s2 + sym((dw2^T cw) (x) ds2)
   // d2s1 = 2 on (b,b), (c,c), -2 on (b,c), (c,b); d2s2 likewise on a, b.
-  const double s = sLL * k0_;
+  // dw1^T cw = -cw on a, +cw on b; ds1 = -2 w2 on b, +2 w2 on c;
+  // dw2^T cw = -cw on b, +cw on c; ds2 = -2 w1 on a, +2 w1 on b.
+  const double t = sLL * k0_;
   const double cw1 = dot3(cw, w1_), cw2 = dot3(cw, w2_);
-  add_identity_block(H, b, b, 2.0 * s * cw1);
-  add_identity_block(H, c, c, 2.0 * s * cw1);
-  add_identity_block(H, b, c, -2.0 * s * cw1);
-  add_identity_block(H, c, b, -2.0 * s * cw1);
-  add_identity_block(H, a, a, 2.0 * s * cw2);
-  add_identity_block(H, b, b, 2.0 * s * cw2);
-  add_identity_block(H, a, b, -2.0 * s * cw2);
-  add_identity_block(H, b, a, -2.0 * s * cw2);
-  double f1[12] = {0}, ds1[12] = {0}, f2[12] = {0}, ds2[12] = {0};
-  for (int i = 0; i < 3; ++i) {
-    f1[3 * a + i] = -cw[i];  // dw1^T cw
-    f1[3 * b + i] = cw[i];
-    ds1[3 * b + i] = -2.0 * w2_[i];
-    ds1[3 * c + i] = 2.0 * w2_[i];
-    f2[3 * b + i] = -cw[i];  // dw2^T cw
-    f2[3 * c + i] = cw[i];
-    ds2[3 * a + i] = -2.0 * w1_[i];
-    ds2[3 * b + i] = 2.0 * w1_[i];
-  }
-  std::memset(tmp, 0, sizeof tmp);
-  add_sym_outer(tmp, f1, ds1);
-  add_sym_outer(tmp, f2, ds2);
-  for (int k = 0; k < 144; ++k) H[k] += s * tmp[k];
-}
-
-void TangentTerm::contracted_hessian(const double* w, double* H) const {
-  accumulate_hessian(w, H);
-  // The terms above are symmetric only up to rounding (du^T M du sums in a
-  // different order for (a,b) and (b,a)); make the matrix exactly symmetric,
-  // as documented, so hosts may rely on it.
-  for (int j = 0; j < 12; ++j)
-    for (int i = j + 1; i < 12; ++i) {
-      const double m = 0.5 * (H[i + 12 * j] + H[j + 12 * i]);
-      H[i + 12 * j] = m;
-      H[j + 12 * i] = m;
-    }
+  add_identity_block(H, ld, b, b, 2.0 * t * (cw1 + cw2));
+  add_identity_block(H, ld, c, c, 2.0 * t * cw1);
+  add_identity_block(H, ld, b, c, -2.0 * t * cw1);
+  add_identity_block(H, ld, c, b, -2.0 * t * cw1);
+  add_identity_block(H, ld, a, a, 2.0 * t * cw2);
+  add_identity_block(H, ld, a, b, -2.0 * t * cw2);
+  add_identity_block(H, ld, b, a, -2.0 * t * cw2);
+  double m_cw[3] = {-cw[0], -cw[1], -cw[2]};
+  double w1x2[3] = {2.0 * w1_[0], 2.0 * w1_[1], 2.0 * w1_[2]};
+  double w2x2[3] = {2.0 * w2_[0], 2.0 * w2_[1], 2.0 * w2_[2]};
+  double m_w1x2[3] = {-w1x2[0], -w1x2[1], -w1x2[2]};
+  double m_w2x2[3] = {-w2x2[0], -w2x2[1], -w2x2[2]};
+  add_sym_outer(H, ld, a, m_cw, b, m_w2x2, t);  // f1 (x) ds1
+  add_sym_outer(H, ld, a, m_cw, c, w2x2, t);
+  add_sym_outer(H, ld, b, cw, b, m_w2x2, t);
+  add_sym_outer(H, ld, b, cw, c, w2x2, t);
+  add_sym_outer(H, ld, b, m_cw, a, m_w1x2, t);  // f2 (x) ds2
+  add_sym_outer(H, ld, b, m_cw, b, w1x2, t);
+  add_sym_outer(H, ld, c, cw, a, m_w1x2, t);
+  add_sym_outer(H, ld, c, cw, b, w1x2, t);
 }
 
 }  // namespace curve

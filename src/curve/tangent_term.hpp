@@ -9,7 +9,8 @@
 //             (derivative of the chord-length parabola through a, b, c)
 //   Constant  u = a host-given direction (only L varies with X).
 // Value, 3x12 Jacobian and, for any vector w, the 12x12 contraction
-// w . d2T/dX2 are computed in closed form (contact-notes.md 2.2).
+// w . d2T/dX2 are computed in closed form (contact-notes.md 2.2), as 3x3
+// blocks on the few patch slots the term involves.
 #pragma once
 
 namespace b2b {
@@ -31,22 +32,23 @@ struct TangentTerm {
 
   // Computes value. Returns false when u has no direction (a folded patch).
   bool evaluate(const double* X);
-  // Fills jac (and the Jacobian of u it needs). Call after evaluate().
+  // Fills jac. Call after evaluate().
   void jacobian();
-  // H = w . d2T/dX2, a symmetric 12x12 column-major matrix (overwritten).
-  // Call after jacobian().
-  void contracted_hessian(const double* w, double* H) const;
+  // H += s * (w . d2T/dX2), H a 12x12 column-major block with leading
+  // dimension ld. Symmetric up to rounding (blocks are summed in different
+  // orders for (a,b) and (b,a)). Call after jacobian().
+  void add_contracted_hessian(const double* w, double s, double* H, int ld) const;
 
  private:
-  void accumulate_hessian(const double* w, double* H) const;
-
   double L_ = 0, eL_[3] = {0, 0, 0};   // element length and unit chord
   double r_ = 0, uhat_[3] = {0, 0, 0}; // |u~| and unit(u)
   // u~ = k0 * u with k0 a positive constant frozen at evaluation: unit(u~) =
   // unit(u) for all X, so derivatives of unit(u) follow from those of u~
   // while u~ stays O(1) for any mesh size (no overflow at 1e100).
   double k0_ = 1, s1_ = 0, s2_ = 0, w1_[3] = {0, 0, 0}, w2_[3] = {0, 0, 0};
-  double du_[36];            // d(u~)/dX, 3x12
+  // d(u~)/dx_s as 3x3 blocks (column-major) for the slots slot_[0..n_slots_)
+  int n_slots_ = 0, slot_[3] = {0, 0, 0};
+  double du_[3][9];
 };
 
 }  // namespace curve

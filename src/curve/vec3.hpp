@@ -2,6 +2,7 @@
 // compiler can inline them into the hot loops.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace b2b {
@@ -17,8 +18,9 @@ inline void sub3(const double* a, const double* b, double* out) {
   out[2] = a[2] - b[2];
 }
 
+// Inputs are finite (checked at the C boundary), so std::max needs no NaN care.
 inline double max_abs3(const double* a) {
-  return std::fmax(std::fabs(a[0]), std::fmax(std::fabs(a[1]), std::fabs(a[2])));
+  return std::max(std::fabs(a[0]), std::max(std::fabs(a[1]), std::fabs(a[2])));
 }
 
 // Euclidean length. Inputs are bounded by B2B_COORD_MAX (checked at the C
