@@ -8,6 +8,10 @@
  * An opaque handle: create, set options by key, finalize, then use it from
  * any number of threads (b2b_pair_eval only reads it). Setting an option
  * after finalize is B2B_ERR_STATE; so is evaluating with an unfinalized one.
+ * Finalizing twice is harmless. An unknown key is B2B_ERR_UNKNOWN_KEY (checked
+ * before the value); a value out of its range B2B_ERR_RANGE (B2B_ERR_NONFINITE
+ * if not finite; an unknown "law" B2B_ERR_UNKNOWN_KIND). Getters return the
+ * current value (a required option reads 0 until set).
  *
  *   key                  type  default      meaning
  *   "penalty"            real  (required)   normal penalty eps_N >= 0
@@ -19,7 +23,7 @@
  *                                           B2B_CONTACT_PARALLEL (not evaluated)
  *   "warm_start"         int   0            1: start the closest-point search
  *                                           from the history's xi, eta
- *   "max_iterations"     int   50           closest-point iterations, >= 1
+ *   "max_iterations"     int   50           closest-point iterations, 1 .. 100000
  *
  * Normal laws (B2B_LAW_*), f_N >= 0 the compressive normal force, g the gap:
  *   LINEAR     f_N = eps_N max(0, -g)
@@ -85,10 +89,14 @@
  *
  * Bad input: B2B_ERR_NULL, B2B_ERR_STATE (params not finalized),
  * B2B_ERR_UNKNOWN_KIND, B2B_ERR_NONFINITE (coordinates, tangents, radii,
- * history), B2B_ERR_RANGE (negative radius, coordinate beyond B2B_COORD_MAX,
- * history not written by b2b), B2B_ERR_SIZE (history length, ldk < 24),
- * B2B_ERR_COINCIDENT and B2B_ERR_FOLDED (degenerate patches, as for
- * b2b_segment_eval). The message names the beam (A or B).
+ * history), B2B_ERR_RANGE (a radius outside [0, B2B_COORD_MAX], a coordinate
+ * beyond B2B_COORD_MAX, a history not written by b2b: a foreign format tag, a
+ * "fresh" history that is not all zeros, a flag or normal out of range; and a
+ * force, energy or tangent that would overflow, from a huge penalty times a
+ * deep penetration), B2B_ERR_SIZE (history length, ldk < 24), and each
+ * segment's own bad input exactly as for b2b_segment_eval (unknown kind or
+ * rule, zero or non-finite end tangent, a midpoint segment at both beam ends,
+ * B2B_ERR_COINCIDENT, B2B_ERR_FOLDED). The message names the beam (A or B).
  */
 #ifndef B2B_PAIR_H
 #define B2B_PAIR_H

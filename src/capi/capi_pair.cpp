@@ -35,6 +35,16 @@ int check_history(const Reporter& r, const double* h, int len) {
                   "hist_old was not written by b2b_pair_eval (format tag %g); start from a "
                   "zero-filled history",
                   tag);
+  if (tag == pr::kHistTagFresh)
+    for (int i = 1; i < len; ++i)
+      if (h[i] != 0.0)
+        return r.fail(B2B_ERR_RANGE,
+                      "hist_old has format tag 0 (fresh) but entry %d is %g: a fresh history is "
+                      "all zeros",
+                      i, h[i]);
+  if (tag == pr::kHistTagV1 && h[pr::kHistHasNormal] != 0.0 && h[pr::kHistHasNormal] != 1.0)
+    return r.fail(B2B_ERR_RANGE, "hist_old has a has-normal flag of %g (0 or 1 expected)",
+                  h[pr::kHistHasNormal]);
   if (tag == pr::kHistTagV1 && h[pr::kHistHasNormal] == 1.0) {
     const double* n = h + pr::kHistNormal;
     const double len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
@@ -43,6 +53,14 @@ int check_history(const Reporter& r, const double* h, int len) {
                     std::sqrt(len2));
   }
   return B2B_OK;
+}
+
+// True if no entry is NaN or infinite: x * 0 is 0 for finite x and NaN
+// otherwise, so one sum decides (and the loop vectorises).
+bool all_finite(const double* v, int n) {
+  double acc = 0.0;
+  for (int i = 0; i < n; ++i) acc += v[i] * 0.0;
+  return acc == 0.0;
 }
 
 }  // namespace
@@ -90,6 +108,14 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
     const pr::PairFailure f =
         pr::evaluate_pair(params->p, seg[0], seg[1], hist_old, out, tangent ? K : nullptr);
     if (f.status != B2B_OK) return report_segment_failure(r, kBeam[f.beam], f.segment);
+    // A huge penalty times a deep penetration can exceed the double range
+    // (the energy grows like penalty * gap^2): say so rather than return Inf.
+    if (!all_finite(out.info, pr::kInfoLength) || !all_finite(out.residual, pr::kNdof) ||
+        (tangent && !all_finite(K, pr::kNdof * pr::kNdof)))
+      return r.fail(B2B_ERR_RANGE,
+                    "the contact force, energy or tangent overflows (penalty %g, gap %g): "
+                    "reduce the penalty or the penetration",
+                    params->p.penalty, out.info[B2B_INFO_GAP]);
 
     std::memcpy(hist_new, out.history, sizeof out.history);
     *contact_status = out.contact_status;

@@ -54,7 +54,11 @@ int b2b_params_set_real(b2b_params* params, const char* key, double value, char*
   return guarded(r, [&]() -> int {
     if (int st = check_settable(r, params, key)) return st;
     b2b::pair::Params& p = params->p;
-    if (!std::isfinite(value)) return r.fail(B2B_ERR_NONFINITE, "\"%s\" = %g is not finite", key, value);
+    if (!is(key, "penalty") && !is(key, "regularization_gap") && !is(key, "parallel_angle"))
+      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%s\" (real keys: %s)", key,
+                    kRealKeys);
+    if (!std::isfinite(value))
+      return r.fail(B2B_ERR_NONFINITE, "\"%s\" = %g is not finite", key, value);
     if (is(key, "penalty")) {
       if (value < 0.0) return r.fail(B2B_ERR_RANGE, "\"penalty\" = %g must be >= 0", value);
       p.penalty = value;
@@ -64,13 +68,10 @@ int b2b_params_set_real(b2b_params* params, const char* key, double value, char*
         return r.fail(B2B_ERR_RANGE, "\"regularization_gap\" = %g must be > 0", value);
       p.regularization_gap = value;
       p.regularization_gap_set = true;
-    } else if (is(key, "parallel_angle")) {
+    } else {  // "parallel_angle"
       if (value < 0.0 || value >= 90.0)
         return r.fail(B2B_ERR_RANGE, "\"parallel_angle\" = %g must be in [0, 90) degrees", value);
       p.parallel_angle_deg = value;
-    } else {
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%s\" (real keys: %s)", key,
-                    kRealKeys);
     }
     return B2B_OK;
   });

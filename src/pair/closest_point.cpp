@@ -11,33 +11,45 @@ namespace {
 
 using curve::dot3;
 using curve::norm3;
-using curve::sub3;
 
 constexpr double kBox = 3.0;       // iterates stay in [-3, 3]: the cubics extend, but not forever
 constexpr double kMaxStep = 1.0;   // at most half a segment per iteration
 constexpr double kArmijo = 1e-4;
 
-double clamp(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
+// NaN goes to the middle of the range rather than through.
+double clamp(double v, double lo, double hi) {
+  if (!(v == v)) return 0.5 * (lo + hi);
+  return v < lo ? lo : (v > hi ? hi : v);
+}
 
+// phi in units of scale^2
 double half_distance_squared(const curve::Segment& A, const curve::Segment& B, double xi,
-                             double eta) {
+                             double eta, double inv_scale) {
   double xa[3], xb[3], d[3];
   A.point(xi, xa, nullptr, nullptr);
   B.point(eta, xb, nullptr, nullptr);
-  sub3(xa, xb, d);
+  for (int i = 0; i < 3; ++i) d[i] = (xa[i] - xb[i]) * inv_scale;
   return 0.5 * dot3(d, d);
+}
+
+void scale3(double* v, double s) {
+  v[0] *= s;
+  v[1] *= s;
+  v[2] *= s;
 }
 
 }  // namespace
 
 void chord_start(const double* a0, const double* a1, const double* b0, const double* b1,
-                 double* xi, double* eta) {
-  // Chord: x = (p0 + p1)/2 + s (p1 - p0)/2, s in [-1, 1].
+                 double scale, double* xi, double* eta) {
+  // Chord: x = (p0 + p1)/2 + s (p1 - p0)/2, s in [-1, 1]; in units of scale
+  // (the products below are of four lengths).
+  const double inv = 1.0 / scale;
   double t1[3], t2[3], c[3];
   for (int i = 0; i < 3; ++i) {
-    t1[i] = a1[i] - a0[i];
-    t2[i] = b1[i] - b0[i];
-    c[i] = (a0[i] + a1[i]) - (b0[i] + b1[i]);
+    t1[i] = (a1[i] - a0[i]) * inv;
+    t2[i] = (b1[i] - b0[i]) * inv;
+    c[i] = ((a0[i] - b0[i]) + (a1[i] - b1[i])) * inv;
   }
   const double t11 = dot3(t1, t1), t22 = dot3(t2, t2), t12 = dot3(t1, t2);
   const double D = t11 * t22 - t12 * t12;
@@ -51,17 +63,24 @@ void chord_start(const double* a0, const double* a1, const double* b0, const dou
 }
 
 ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, double xi,
-                             double eta, int max_iterations, double tol_length) {
+                             double eta, int max_iterations, double tol_length, double scale) {
   ClosestPoints r;
+  const double inv_scale = 1.0 / scale;
   for (int it = 0;; ++it) {
     double xa[3], xad[3], xadd[3], xb[3], xbd[3], xbdd[3], d[3];
     A.point(xi, xa, xad, xadd);
     B.point(eta, xb, xbd, xbdd);
-    sub3(xa, xb, d);
+    // Everything below in units of scale (phi, its gradient and Hessian are
+    // then O(1) whatever the size of the segments).
+    for (int i = 0; i < 3; ++i) d[i] = (xa[i] - xb[i]) * inv_scale;
+    scale3(xad, inv_scale);
+    scale3(xadd, inv_scale);
+    scale3(xbd, inv_scale);
+    scale3(xbdd, inv_scale);
     // Gradient of phi; in length units after dividing by the speeds.
     const double g1 = dot3(d, xad), g2 = -dot3(d, xbd);
     const double na = norm3(xad), nb = norm3(xbd);
-    const double tol = tol_length + 64.0 * DBL_EPSILON * norm3(d);
+    const double tol = tol_length * inv_scale + 64.0 * DBL_EPSILON * norm3(d);
     if (std::fabs(g1) <= tol * na && std::fabs(g2) <= tol * nb) {
       r.converged = true;
       r.iterations = it;
@@ -76,11 +95,11 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
     double h11 = dot3(xad, xad) + dot3(d, xadd);
     double h22 = dot3(xbd, xbd) - dot3(d, xbdd);
     const double h12 = -dot3(xad, xbd);
-    const double scale = na * na + nb * nb;
+    const double hscale = na * na + nb * nb;
     const double mean = 0.5 * (h11 + h22);
     const double radius = std::sqrt(0.25 * (h11 - h22) * (h11 - h22) + h12 * h12);
     const double lambda_min = mean - radius;
-    const double floor = 1e-6 * scale;
+    const double floor = 1e-6 * hscale;
     if (lambda_min < floor) {
       h11 += floor - lambda_min;
       h22 += floor - lambda_min;
@@ -102,7 +121,8 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
       const double slope = g1 * s1 + g2 * s2;  // < 0: a descent direction
       for (int k = 0; k < 40; ++k) {
         const double trial = half_distance_squared(A, B, clamp(xi + alpha * s1, -kBox, kBox),
-                                                   clamp(eta + alpha * s2, -kBox, kBox));
+                                                   clamp(eta + alpha * s2, -kBox, kBox),
+                                                   inv_scale);
         if (trial <= phi + kArmijo * alpha * slope) break;
         alpha *= 0.5;
       }

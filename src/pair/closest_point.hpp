@@ -19,14 +19,17 @@ struct ClosestPoints {
 
 // Parameters of the closest points of the straight chords between the end
 // points a0-a1 and b0-b1 of both segments (Wriggers and Zavarise 1997),
-// clamped to [-1, 1]; (0, 0) when the chords are (nearly) parallel.
+// clamped to [-1, 1]; (0, 0) when the chords are (nearly) parallel. scale: a
+// length of the segments' size (the computation is done in units of it).
 void chord_start(const double* a0, const double* a1, const double* b0, const double* b1,
-                 double* xi, double* eta);
+                 double scale, double* xi, double* eta);
 
 // Newton from (xi, eta). tol_length: the converged gradient, in length
 // units (the components of x_A - x_B along both tangents), must be below it.
+// scale: a length of the segments' size; all products are formed in units of
+// it, so that nothing overflows or underflows for any supported coordinates.
 ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, double xi,
-                             double eta, int max_iterations, double tol_length);
+                             double eta, int max_iterations, double tol_length, double scale);
 
 }  // namespace pair
 }  // namespace b2b

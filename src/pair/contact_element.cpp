@@ -64,11 +64,9 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   info[B2B_INFO_SYMMETRIC] = 1.0;
 
   // Length scales: segment chords, and the coordinates' magnitude (rounding).
-  double a0[3], a1[3], b0[3], b1[3], t[3];
-  sa.point(-1.0, a0, nullptr, nullptr);
-  sa.point(1.0, a1, nullptr, nullptr);
-  sb.point(-1.0, b0, nullptr, nullptr);
-  sb.point(1.0, b1, nullptr, nullptr);
+  const double *a0 = sa.start_point(), *a1 = sa.end_point();
+  const double *b0 = sb.start_point(), *b1 = sb.end_point();
+  double t[3];
   sub3(a1, a0, t);
   const double len_a = norm3(t);
   sub3(b1, b0, t);
@@ -76,6 +74,10 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   const double coord = std::fmax(std::fmax(max_abs3(a0), max_abs3(a1)),
                                  std::fmax(max_abs3(b0), max_abs3(b1)));
   const double tol_length = 1e-13 * (len_a + len_b) + 64.0 * DBL_EPSILON * coord;
+  // The length unit of the closest-point algebra below: products of four
+  // lengths (the Hessian's determinant) stay in range for any coordinates.
+  const double unit = len_a + len_b;
+  const double inv_unit = 1.0 / unit;
 
   // Closest points.
   const bool has_history = hist_old[kHistTag] == kHistTagV1;
@@ -85,9 +87,10 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
     xi0 = std::fmin(1.0, std::fmax(-1.0, hist_old[kHistXi]));
     eta0 = std::fmin(1.0, std::fmax(-1.0, hist_old[kHistEta]));
   } else {
-    chord_start(a0, a1, b0, b1, &xi0, &eta0);
+    chord_start(a0, a1, b0, b1, unit, &xi0, &eta0);
   }
-  const ClosestPoints cp = closest_points(sa, sb, xi0, eta0, params.max_iterations, tol_length);
+  const ClosestPoints cp =
+      closest_points(sa, sb, xi0, eta0, params.max_iterations, tol_length, unit);
   const double xi = cp.xi, eta = cp.eta;
   info[B2B_INFO_XI] = xi;
   info[B2B_INFO_ETA] = eta;
@@ -107,20 +110,28 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
     info[B2B_INFO_POINT_B + i] = pb.x[i];
   }
 
-  // Crossing angle, and the Hessian of phi at the solution.
-  const double na = norm3(pa.xd), nb = norm3(pb.xd);
+  // Crossing angle, and the Hessian of phi at the solution, in units of
+  // `unit` (h11, h12, h22 scale like length^2, det like length^4).
+  double ta[3], tb[3], tad[3], tbd[3], d[3], du[3];
+  for (int i = 0; i < 3; ++i) {
+    ta[i] = pa.xd[i] * inv_unit;
+    tb[i] = pb.xd[i] * inv_unit;
+    tad[i] = pa.xdd[i] * inv_unit;
+    tbd[i] = pb.xdd[i] * inv_unit;
+    d[i] = pa.x[i] - pb.x[i];
+    du[i] = d[i] * inv_unit;
+  }
+  const double na = norm3(ta), nb = norm3(tb);
   double cr[3];
-  cr[0] = pa.xd[1] * pb.xd[2] - pa.xd[2] * pb.xd[1];
-  cr[1] = pa.xd[2] * pb.xd[0] - pa.xd[0] * pb.xd[2];
-  cr[2] = pa.xd[0] * pb.xd[1] - pa.xd[1] * pb.xd[0];
+  cr[0] = ta[1] * tb[2] - ta[2] * tb[1];
+  cr[1] = ta[2] * tb[0] - ta[0] * tb[2];
+  cr[2] = ta[0] * tb[1] - ta[1] * tb[0];
   const double sin_angle = norm3(cr) / (na * nb);
-  const double cos_angle = std::fabs(dot3(pa.xd, pb.xd)) / (na * nb);
+  const double cos_angle = std::fabs(dot3(ta, tb)) / (na * nb);
   info[B2B_INFO_ANGLE] = std::atan2(sin_angle, cos_angle) * 180.0 / kPi;
-  double d[3];
-  sub3(pa.x, pb.x, d);
-  const double h11 = dot3(pa.xd, pa.xd) + dot3(d, pa.xdd);
-  const double h22 = dot3(pb.xd, pb.xd) - dot3(d, pb.xdd);
-  const double h12 = -dot3(pa.xd, pb.xd);
+  const double h11 = dot3(ta, ta) + dot3(du, tad);
+  const double h22 = dot3(tb, tb) - dot3(du, tbd);
+  const double h12 = -dot3(ta, tb);
   const double det = h11 * h22 - h12 * h12;
   if (sin_angle < params.sin_parallel_angle || !(det > 1e-12 * na * na * nb * nb)) {
     out.contact_status = B2B_CONTACT_PARALLEL;
@@ -153,8 +164,8 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   out.history[kHistXi] = xi;
   out.history[kHistEta] = eta;
 
-  if (!owns(xi, na, len_a, A.end_rule != B2B_END_NEIGHBOUR) ||
-      !owns(eta, nb, len_b, B.end_rule != B2B_END_NEIGHBOUR)) {
+  if (!owns(xi, na * unit, len_a, A.end_rule != B2B_END_NEIGHBOUR) ||
+      !owns(eta, nb * unit, len_b, B.end_rule != B2B_END_NEIGHBOUR)) {
     out.contact_status = B2B_CONTACT_OUTSIDE;
     return fail;
   }
@@ -179,65 +190,84 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   for (int c = 0; c < kNdof; ++c) out.residual[c] = -law.force * G[c];
   if (!K) return fail;
 
-  // Tangent K = -f' G G^T - f dG/dX, where (all total derivatives in X)
-  //   dG/dX = blockdiag(n.d2x_A/dX_A^2, -n.d2x_B/dX_B^2) + a dxi^T + b deta^T + J^T dn/dX,
-  //   a = [P_A,xi^T n; 0], b = [0; -P_B,eta^T n], J = [P_A, -P_B],
-  //   dn/dX = (I - n n^T)/rho_signed (J + x_A,xi dxi^T - x_B,eta deta^T),
-  // and [dxi; deta] = -H^-1 dgrad(phi)/dX from the orthogonality conditions.
-  double dxi[kNdof], deta[kNdof];
-  for (int c = 0; c < 12; ++c) {
-    const double bx_a = col_dot(PA, c, pa.xd) + col_dot(PAd, c, d);
-    const double bx_b = -col_dot(PB, c, pa.xd);
-    const double be_a = -col_dot(PA, c, pb.xd);
-    const double be_b = col_dot(PB, c, pb.xd) - col_dot(PBd, c, d);
-    dxi[c] = -(h22 * bx_a - h12 * be_a) / det;
-    deta[c] = -(h11 * be_a - h12 * bx_a) / det;
-    dxi[12 + c] = -(h22 * bx_b - h12 * be_b) / det;
-    deta[12 + c] = -(h11 * be_b - h12 * bx_b) / det;
-  }
-  double av[12], bv[12];
-  for (int c = 0; c < 12; ++c) {
-    av[c] = col_dot(PAd, c, n);
-    bv[c] = -col_dot(PBd, c, n);
-  }
-  // J (3 x 24) and dn/dX (3 x 24)
-  double J[3 * kNdof], N[3 * kNdof];
-  for (int c = 0; c < 12; ++c)
-    for (int i = 0; i < 3; ++i) {
-      J[i + 3 * c] = PA[i + 3 * c];
-      J[i + 3 * (12 + c)] = -PB[i + 3 * c];
+  // Tangent K = -f' G G^T - f dG/dX with (all total derivatives in X)
+  //   dG/dX = blockdiag(n.d2x_A/dX_A^2, -n.d2x_B/dX_B^2)
+  //         + [P_A,xi^T n; 0] dxi^T + [0; -P_B,eta^T n] deta^T + J^T dn/dX,
+  //   J = [P_A, -P_B], dn/dX = (I - n n^T)/rho (J + x_A,xi dxi^T - x_B,eta deta^T),
+  //   [dxi; deta] = -H^-1 B, B = d grad(phi)/dX (the orthogonality conditions).
+  // Since n is normal to both tangents at the closest points, the xi and eta
+  // terms fold into B^T/rho, and
+  //   K = -f' G G^T - f blockdiag(...) - (f/rho) (J^T (I - n n^T) J - B^T H^-1 B),
+  // symmetric: computed on one triangle, over the columns of used slots only.
+  int cols[kNdof], m = 0;
+  const unsigned used[2] = {curve::used_slots(A.kind, A.start_rule, A.end_rule),
+                            curve::used_slots(B.kind, B.start_rule, B.end_rule)};
+  for (int beam = 0; beam < 2; ++beam)
+    for (int slot = 0; slot < 4; ++slot)
+      if (used[beam] & (1u << slot))
+        for (int i = 0; i < 3; ++i) cols[m++] = 12 * beam + 3 * slot + i;
+
+  // The used columns of J (x, y, z rows), G, n.J, B and H^-1 B, compacted
+  // into contiguous arrays so that the inner loops below vectorise.
+  double Jx[kNdof], Jy[kNdof], Jz[kNdof], g[kNdof], nJ[kNdof], B0[kNdof], B1[kNdof];
+  double C0[kNdof], C1[kNdof], av[kNdof], bv[kNdof];
+  for (int k = 0; k < m; ++k) {
+    const int c = cols[k];
+    const bool on_a = c < 12;
+    const int cc = on_a ? c : c - 12;
+    const double* P = on_a ? PA : PB;
+    const double sign = on_a ? 1.0 : -1.0;
+    Jx[k] = sign * P[3 * cc];
+    Jy[k] = sign * P[1 + 3 * cc];
+    Jz[k] = sign * P[2 + 3 * cc];
+    g[k] = G[c];
+    nJ[k] = n[0] * Jx[k] + n[1] * Jy[k] + n[2] * Jz[k];
+    if (on_a) {
+      B0[k] = col_dot(PA, cc, pa.xd) + col_dot(PAd, cc, d);
+      B1[k] = -col_dot(PA, cc, pb.xd);
+      av[k] = col_dot(PAd, cc, n);
+      bv[k] = 0.0;
+    } else {
+      B0[k] = -col_dot(PB, cc, pa.xd);
+      B1[k] = col_dot(PB, cc, pb.xd) - col_dot(PBd, cc, d);
+      av[k] = 0.0;
+      bv[k] = -col_dot(PBd, cc, n);
     }
-  if (rho_signed != 0.0) {
-    for (int c = 0; c < kNdof; ++c) {
-      double v[3];
-      for (int i = 0; i < 3; ++i) v[i] = J[i + 3 * c] + pa.xd[i] * dxi[c] - pb.xd[i] * deta[c];
-      const double nv = dot3(n, v);
-      for (int i = 0; i < 3; ++i) N[i + 3 * c] = (v[i] - n[i] * nv) / rho_signed;
-    }
-  } else {
-    std::memset(N, 0, sizeof N);
+    // H^-1 B, with H in units of unit^2
+    C0[k] = (h22 * B0[k] - h12 * B1[k]) / det * inv_unit * inv_unit;
+    C1[k] = (h11 * B1[k] - h12 * B0[k]) / det * inv_unit * inv_unit;
   }
   const double f = law.force, fp = law.slope;
-  for (int c = 0; c < kNdof; ++c)
-    for (int r = 0; r < kNdof; ++r) {
-      double dg = dot3(J + 3 * r, N + 3 * c);
-      if (r < 12) dg += av[r] * dxi[c];
-      else dg += bv[r - 12] * deta[c];
-      K[r + kNdof * c] = -fp * G[r] * G[c] - f * dg;
-    }
+  // compact m x m, leading dimension kNdof; K itself when all columns are used
+  double Kbuf[kNdof * kNdof];
+  double* Kc = (m == kNdof) ? K : Kbuf;
+  const bool symmetric = rho_signed != 0.0;
+  if (symmetric) {  // the upper triangle; mirrored below
+    const double fr = f / rho_signed;
+    for (int c = 0; c < m; ++c)
+      for (int r = 0; r <= c; ++r) {
+        const double jqj = Jx[r] * Jx[c] + Jy[r] * Jy[c] + Jz[r] * Jz[c] - nJ[r] * nJ[c];
+        const double bhb = B0[r] * C0[c] + B1[r] * C1[c];
+        Kc[r + kNdof * c] = -fp * g[r] * g[c] - fr * (jqj - bhb);
+      }
+  } else {
+    // Intersecting axes: the normal is the previous one and does not rotate;
+    // what is left of the closest points' motion is not symmetric.
+    info[B2B_INFO_SYMMETRIC] = 0.0;
+    for (int c = 0; c < m; ++c)
+      for (int r = 0; r < m; ++r)
+        Kc[r + kNdof * c] = -fp * g[r] * g[c] + f * (av[r] * C0[c] + bv[r] * C1[c]);
+  }
+  if (Kc != K)
+    for (int c = 0; c < m; ++c)
+      for (int r = 0; r < m; ++r) K[cols[r] + kNdof * cols[c]] = Kc[r + kNdof * c];
   // Curvature of the smoothed curves in X: only the node-preserving kinds
   // (and host end tangents) are nonlinear in X; the linear kind pays nothing.
-  double H[144], Hd[144];
-  if (!sa.linear_in_X()) {
-    sa.contracted_hessians(xi, n, H, Hd);
-    for (int c = 0; c < 12; ++c)
-      for (int r = 0; r < 12; ++r) K[r + kNdof * c] -= f * H[r + 12 * c];
-  }
-  if (!sb.linear_in_X()) {
-    sb.contracted_hessians(eta, n, H, Hd);
-    for (int c = 0; c < 12; ++c)
-      for (int r = 0; r < 12; ++r) K[(12 + r) + kNdof * (12 + c)] += f * H[r + 12 * c];
-  }
+  sa.add_contracted_hessian(xi, n, -f, K, kNdof);
+  sb.add_contracted_hessian(eta, n, f, K + 12 + 12 * kNdof, kNdof);
+  if (symmetric)  // exactly symmetric: the lower triangle is the upper one
+    for (int c = 0; c < kNdof; ++c)
+      for (int r = c + 1; r < kNdof; ++r) K[r + kNdof * c] = K[c + kNdof * r];
   return fail;
 }
 
