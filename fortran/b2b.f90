@@ -4,11 +4,24 @@
 !> procedure of the same name, plus every C constant (B2B_OK, B2B_CURVE_*, ...)
 !> as a parameter of the same name and value, generated from the C headers.
 !>
+!> Procedures:
+!>  * core:     b2b_strerror, b2b_version, b2b_abi_version
+!>  * curve:    b2b_segment_eval, b2b_beam_segment_count, b2b_beam_segment_patch
+!>  * contact:  type(b2b_params) with b2b_params_create, b2b_params_destroy,
+!>              b2b_params_set_real, b2b_params_set_int, b2b_params_get_real,
+!>              b2b_params_get_int, b2b_params_finalize, b2b_params_history_size;
+!>              b2b_pair_eval
+!>
 !> Conventions of the wrappers:
 !>  * Arrays are assumed-shape and must be contiguous (sections are copied in
 !>    by the compiler); their shapes are checked, a wrong shape gives
 !>    B2B_ERR_SIZE. Node coordinates are (3, nodes) arrays.
 !>  * Node and segment numbers are 1-based; a missing node is 0.
+!>  * Constants that index a C array (B2B_INFO_*) keep their 0-based C
+!>    values: the C entry info[B2B_INFO_GAP] is info(B2B_INFO_GAP + 1).
+!>  * A C handle is a derived type with a private pointer (type(b2b_params)),
+!>    null until created; destroy nulls it again. Copies of a handle share the
+!>    C object: destroy it once.
 !>  * Every procedure ends with two optional arguments: ierr (the status, 0 on
 !>    success) and errmsg (the message naming the problem, '' on success).
 !>    If ierr is absent and the call fails, the program stops with the message.
@@ -25,6 +38,17 @@ module b2b
 
   public :: b2b_strerror, b2b_version, b2b_abi_version
   public :: b2b_segment_eval, b2b_beam_segment_count, b2b_beam_segment_patch
+  public :: b2b_params_create, b2b_params_destroy, b2b_params_set_real, b2b_params_set_int
+  public :: b2b_params_get_real, b2b_params_get_int, b2b_params_finalize
+  public :: b2b_params_history_size, b2b_pair_eval
+
+  !> Contact parameters (b2b_params in C): an opaque handle, null until
+  !> b2b_params_create. Set options by key, finalize, then pass it to
+  !> b2b_pair_eval; free it with b2b_params_destroy.
+  type, public :: b2b_params
+    private
+    type(c_ptr) :: ptr = c_null_ptr
+  end type
 
   interface
     function c_b2b_strerror(status) bind(C, name='b2b_strerror') result(msg)
@@ -74,6 +98,104 @@ module b2b
       import :: c_int, c_char
       integer(c_int), value :: kind, n_nodes, closed, segment
       integer(c_int), intent(inout) :: nodes(4), start_rule, end_rule
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_params_create(params, errmsg, errmsg_len) &
+        bind(C, name='b2b_params_create') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), intent(inout) :: params
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_params_destroy(params) bind(C, name='b2b_params_destroy') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), intent(inout) :: params
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_params_set_real(params, key, value, errmsg, errmsg_len) &
+        bind(C, name='b2b_params_set_real') result(st)
+      import :: c_int, c_double, c_ptr, c_char
+      type(c_ptr), value :: params
+      character(kind=c_char), intent(in) :: key(*)
+      real(c_double), value :: value
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_params_set_int(params, key, value, errmsg, errmsg_len) &
+        bind(C, name='b2b_params_set_int') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: params
+      character(kind=c_char), intent(in) :: key(*)
+      integer(c_int), value :: value
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_params_get_real(params, key, value, errmsg, errmsg_len) &
+        bind(C, name='b2b_params_get_real') result(st)
+      import :: c_int, c_double, c_ptr, c_char
+      type(c_ptr), value :: params
+      character(kind=c_char), intent(in) :: key(*)
+      real(c_double), intent(inout) :: value
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_params_get_int(params, key, value, errmsg, errmsg_len) &
+        bind(C, name='b2b_params_get_int') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: params
+      character(kind=c_char), intent(in) :: key(*)
+      integer(c_int), intent(inout) :: value
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_params_finalize(params, errmsg, errmsg_len) &
+        bind(C, name='b2b_params_finalize') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: params
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_params_history_size(params, n, errmsg, errmsg_len) &
+        bind(C, name='b2b_params_history_size') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: params
+      integer(c_int), intent(inout) :: n
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_pair_eval(params, segments, X, end_tangents, radii, hist_old, hist_new, &
+                             hist_len, contact_status, info, residual, tangent, ldk, errmsg, &
+                             errmsg_len) bind(C, name='b2b_pair_eval') result(st)
+      import :: c_int, c_double, c_ptr, c_char
+      type(c_ptr), value :: params
+      integer(c_int), intent(in) :: segments(6)
+      real(c_double), intent(in) :: X(*)
+      type(c_ptr), value :: end_tangents
+      real(c_double), intent(in) :: radii(*), hist_old(*)
+      real(c_double), intent(inout) :: hist_new(*)
+      integer(c_int), value :: hist_len
+      integer(c_int), intent(inout) :: contact_status
+      real(c_double), intent(inout) :: info(*), residual(*)
+      type(c_ptr), value :: tangent
+      integer(c_int), value :: ldk
       character(kind=c_char), intent(inout) :: errmsg(*)
       integer(c_int), value :: errmsg_len
       integer(c_int) :: st
@@ -231,6 +353,243 @@ contains
     call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
+  ! ------------------------------------------------------------- contact
+
+  !> Creates a parameter handle holding the defaults (the keys are listed in
+  !> the C header b2b_pair.h). params must be null (never created, or
+  !> destroyed): creating over a live handle would lose it, so that is
+  !> B2B_ERR_STATE and params is left as it is.
+  subroutine b2b_params_create(params, ierr, errmsg)
+    type(b2b_params), intent(inout) :: params
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_params_create'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    type(c_ptr) :: p
+    integer(c_int) :: st
+    if (c_associated(params%ptr)) then
+      call finish_text(me, int(B2B_ERR_STATE, c_int), me // ': params already holds a ' // &
+                       'handle (b2b_params_destroy it first)', ierr, errmsg)
+      return
+    end if
+    buf = c_null_char
+    p = c_null_ptr
+    st = c_b2b_params_create(p, buf, int(size(buf), c_int))
+    if (st == B2B_OK) params%ptr = p
+    call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Frees the handle and nulls it. A null handle (never created, or already
+  !> destroyed) is a no-op, so destroying twice is safe. Never fails.
+  subroutine b2b_params_destroy(params, ierr, errmsg)
+    type(b2b_params), intent(inout) :: params
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    integer(c_int) :: st
+    st = c_b2b_params_destroy(params%ptr)
+    params%ptr = c_null_ptr
+    call finish('b2b_params_destroy', st, blank_message(), ierr, errmsg)
+  end subroutine
+
+  !> Sets the real option key (trailing blanks ignored), before finalize.
+  subroutine b2b_params_set_real(params, key, value, ierr, errmsg)
+    type(b2b_params), intent(inout) :: params
+    character(len=*), intent(in) :: key
+    real(c_double), intent(in) :: value
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_params_set_real(params%ptr, trim(key) // c_null_char, value, buf, &
+                               int(size(buf), c_int))
+    call finish('b2b_params_set_real', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Sets the integer option key (trailing blanks ignored), before finalize.
+  subroutine b2b_params_set_int(params, key, value, ierr, errmsg)
+    type(b2b_params), intent(inout) :: params
+    character(len=*), intent(in) :: key
+    integer, intent(in) :: value
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_params_set_int(params%ptr, trim(key) // c_null_char, int(value, c_int), buf, &
+                              int(size(buf), c_int))
+    call finish('b2b_params_set_int', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> The value of the real option key (its default if it was never set).
+  subroutine b2b_params_get_real(params, key, value, ierr, errmsg)
+    type(b2b_params), intent(in) :: params
+    character(len=*), intent(in) :: key
+    real(c_double), intent(inout) :: value
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    real(c_double) :: cvalue
+    integer(c_int) :: st
+    buf = c_null_char
+    cvalue = 0
+    st = c_b2b_params_get_real(params%ptr, trim(key) // c_null_char, cvalue, buf, &
+                               int(size(buf), c_int))
+    if (st == B2B_OK) value = cvalue
+    call finish('b2b_params_get_real', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> The value of the integer option key (its default if it was never set).
+  subroutine b2b_params_get_int(params, key, value, ierr, errmsg)
+    type(b2b_params), intent(in) :: params
+    character(len=*), intent(in) :: key
+    integer, intent(inout) :: value
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: cvalue, st
+    buf = c_null_char
+    cvalue = 0
+    st = c_b2b_params_get_int(params%ptr, trim(key) // c_null_char, cvalue, buf, &
+                              int(size(buf), c_int))
+    if (st == B2B_OK) value = cvalue
+    call finish('b2b_params_get_int', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Checks the options together and makes the handle read-only (setting an
+  !> option afterwards is B2B_ERR_STATE). Finalizing twice is allowed.
+  subroutine b2b_params_finalize(params, ierr, errmsg)
+    type(b2b_params), intent(inout) :: params
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_params_finalize(params%ptr, buf, int(size(buf), c_int))
+    call finish('b2b_params_finalize', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> n: the length of a pair history (hist_old, hist_new of b2b_pair_eval) for
+  !> this finalized parameter set.
+  subroutine b2b_params_history_size(params, n, ierr, errmsg)
+    type(b2b_params), intent(in) :: params
+    integer, intent(inout) :: n
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: cn, st
+    buf = c_null_char
+    cn = 0
+    st = c_b2b_params_history_size(params%ptr, cn, buf, int(size(buf), c_int))
+    if (st == B2B_OK) n = cn
+    call finish('b2b_params_history_size', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Evaluates one contact pair, segment A against segment B (b2b_pair_eval
+  !> in the C header documents the closest points, the gap and its sign,
+  !> ownership, the history and the contact status).
+  !>   params               a finalized parameter handle
+  !>   segments(3,2)        column b: kind, start_rule, end_rule of beam b (A, B)
+  !>   X(3,8)               the 24 contact coordinates: A's patch nodes x1..x4,
+  !>                        then B's
+  !>   radii(2)             cross-section radii of A and B (>= 0)
+  !>   hist_old(:)          the pair's history: b2b_params_history_size doubles,
+  !>                        all zero for a fresh pair
+  !>   hist_new(:)          the updated history, of the same size as hist_old;
+  !>                        a distinct array (copy it into hist_old to commit)
+  !>   contact_status       B2B_CONTACT_* (a physical outcome, not an error)
+  !>   info(32)             B2B_INFO_*: the C entry info[k] is info(k + 1)
+  !>   residual(24)         the contact contribution to the internal forces
+  !>   tangent(ldk,24)      d residual/dX in rows 1..24, ldk = size(tangent,1)
+  !>                        >= 24 (rows 25..ldk are not touched)
+  !>   end_tangents(3,4)    host end tangents: A's first and last node, then
+  !>                        B's; needed only where a rule is B2B_END_TANGENT
+  !> An absent tangent is not computed (which is cheaper).
+  subroutine b2b_pair_eval(params, segments, X, radii, hist_old, hist_new, contact_status, &
+                           info, residual, tangent, end_tangents, ierr, errmsg)
+    type(b2b_params), intent(in) :: params
+    integer, intent(in), contiguous :: segments(:, :)
+    real(c_double), intent(in), contiguous :: X(:, :)
+    real(c_double), intent(in), contiguous :: radii(:)
+    real(c_double), intent(in), contiguous :: hist_old(:)
+    real(c_double), intent(inout), contiguous :: hist_new(:)
+    integer, intent(inout) :: contact_status
+    real(c_double), intent(inout), contiguous :: info(:)
+    real(c_double), intent(inout), contiguous :: residual(:)
+    real(c_double), intent(inout), contiguous, target, optional :: tangent(:, :)
+    real(c_double), intent(in), contiguous, target, optional :: end_tangents(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_pair_eval'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    type(c_ptr) :: pk, pt
+    integer(c_int) :: st, cseg(6), cstatus, ldk
+    real(c_double) :: h0(1), h1(1)
+
+    if (.not. shape_is(shape(segments), [3, 2])) then
+      call finish_size(me, 'segments', shape(segments), [3, 2], ierr, errmsg)
+      return
+    end if
+    if (.not. shape_is(shape(X), [3, 8])) then
+      call finish_size(me, 'X', shape(X), [3, 8], ierr, errmsg)
+      return
+    end if
+    if (.not. shape_is(shape(radii), [2])) then
+      call finish_size(me, 'radii', shape(radii), [2], ierr, errmsg)
+      return
+    end if
+    if (size(hist_new) /= size(hist_old)) then
+      call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': hist_old and hist_new differ ' // &
+                       'in size (' // trim(int_text(size(hist_old))) // ' and ' // &
+                       trim(int_text(size(hist_new))) // ')', ierr, errmsg)
+      return
+    end if
+    if (.not. shape_is(shape(info), [B2B_PAIR_INFO_LEN])) then
+      call finish_size(me, 'info', shape(info), [B2B_PAIR_INFO_LEN], ierr, errmsg)
+      return
+    end if
+    if (.not. shape_is(shape(residual), [B2B_PAIR_NDOF])) then
+      call finish_size(me, 'residual', shape(residual), [B2B_PAIR_NDOF], ierr, errmsg)
+      return
+    end if
+    pk = c_null_ptr
+    pt = c_null_ptr
+    ldk = B2B_PAIR_NDOF
+    if (present(tangent)) then
+      if (size(tangent, 1) < B2B_PAIR_NDOF .or. size(tangent, 2) /= B2B_PAIR_NDOF) then
+        call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': tangent has shape (' // &
+                         shape_text(shape(tangent)) // '), expected (ldk,24) with ldk >= 24', &
+                         ierr, errmsg)
+        return
+      end if
+      pk = c_loc(tangent)
+      ldk = int(size(tangent, 1), c_int)
+    end if
+    if (present(end_tangents)) then
+      if (.not. shape_is(shape(end_tangents), [3, 4])) then
+        call finish_size(me, 'end_tangents', shape(end_tangents), [3, 4], ierr, errmsg)
+        return
+      end if
+      pt = c_loc(end_tangents)
+    end if
+    cseg = int(reshape(segments, [6]), c_int)
+    cstatus = 0
+    buf = c_null_char
+    if (size(hist_old) > 0) then
+      st = c_b2b_pair_eval(params%ptr, cseg, X, pt, radii, hist_old, hist_new, &
+                           int(size(hist_old), c_int), cstatus, info, residual, pk, ldk, &
+                           buf, int(size(buf), c_int))
+    else
+      ! A zero-size array may have any address, even NULL: pass a dummy and
+      ! let the library report the length.
+      h0 = 0
+      st = c_b2b_pair_eval(params%ptr, cseg, X, pt, radii, h0, h1, 0_c_int, cstatus, info, &
+                           residual, pk, ldk, buf, int(size(buf), c_int))
+    end if
+    if (st == B2B_OK) contact_status = cstatus
+    call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
   ! ---------------------------------------------------------------- helpers
 
   !> Hands the status to the caller: through ierr/errmsg when present; when
@@ -263,16 +622,24 @@ contains
     integer, intent(in) :: got(:), want(:)
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
-    character(len=B2B_ERRMSG_LEN) :: text
+    call finish_text(procname, int(B2B_ERR_SIZE, c_int), procname // ': ' // argname // &
+                     ' has shape (' // shape_text(got) // '), expected (' // &
+                     shape_text(want) // ')', ierr, errmsg)
+  end subroutine
+
+  !> Reports a failure the module detects itself, with its message.
+  subroutine finish_text(procname, st, text, ierr, errmsg)
+    character(len=*), intent(in) :: procname, text
+    integer(c_int), intent(in) :: st
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer :: i
-    text = procname // ': ' // argname // ' has shape (' // shape_text(got) // &
-           '), expected (' // shape_text(want) // ')'
     buf = c_null_char
     do i = 1, min(len_trim(text), size(buf) - 1)
       buf(i) = text(i:i)
     end do
-    call finish(procname, int(B2B_ERR_SIZE, c_int), buf, ierr, errmsg)
+    call finish(procname, st, buf, ierr, errmsg)
   end subroutine
 
   logical function shape_is(got, want)
