@@ -55,14 +55,6 @@ int check_history(const Reporter& r, const double* h, int len) {
   return B2B_OK;
 }
 
-// True if no entry is NaN or infinite: x * 0 is 0 for finite x and NaN
-// otherwise, so one sum decides (and the loop vectorises).
-bool all_finite(const double* v, int n) {
-  double acc = 0.0;
-  for (int i = 0; i < n; ++i) acc += v[i] * 0.0;
-  return acc == 0.0;
-}
-
 }  // namespace
 
 extern "C" {
@@ -108,10 +100,7 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
     const pr::PairFailure f =
         pr::evaluate_pair(params->p, seg[0], seg[1], hist_old, out, tangent ? K : nullptr);
     if (f.status != B2B_OK) return report_segment_failure(r, kBeam[f.beam], f.segment);
-    // A huge penalty times a deep penetration can exceed the double range
-    // (the energy grows like penalty * gap^2): say so rather than return Inf.
-    if (!all_finite(out.info, pr::kInfoLength) || !all_finite(out.residual, pr::kNdof) ||
-        (tangent && !all_finite(K, pr::kNdof * pr::kNdof)))
+    if (out.overflow)
       return r.fail(B2B_ERR_RANGE,
                     "the contact force, energy or tangent overflows (penalty %g, gap %g): "
                     "reduce the penalty or the penetration",

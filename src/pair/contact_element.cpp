@@ -31,6 +31,21 @@ bool owns(double t, double speed, double length, bool beam_ends_here) {
   return t > -1.0 && t < 1.0;
 }
 
+// True if no entry is NaN or infinite: v * 0 is (+-)0 for finite v and NaN
+// otherwise. Two independent sums: the compiler may not reorder (nor
+// vectorise) a floating-point sum, and one chain of dependent additions
+// would cost as much as a linear tangent.
+bool all_finite(const double* v, int n) {
+  double a0 = 0.0, a1 = 0.0;
+  int i = 0;
+  for (; i + 1 < n; i += 2) {
+    a0 += v[i] * 0.0;
+    a1 += v[i + 1] * 0.0;
+  }
+  if (i < n) a0 += v[i] * 0.0;
+  return a0 + a1 == 0.0;
+}
+
 // Column c of a 3 x 12 column-major matrix dotted with v.
 inline double col_dot(const double* M, int c, const double* v) { return dot3(M + 3 * c, v); }
 
@@ -188,6 +203,9 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
     G[12 + c] = -col_dot(PB, c, n);
   }
   for (int c = 0; c < kNdof; ++c) out.residual[c] = -law.force * G[c];
+  // A huge penalty times a deep penetration can exceed the double range (the
+  // energy grows like penalty * gap^2); the caller reports it.
+  out.overflow = !all_finite(out.info, kInfoLength) || !all_finite(out.residual, kNdof);
   if (!K) return fail;
 
   // Tangent K = -f' G G^T - f dG/dX with (all total derivatives in X)
@@ -258,16 +276,32 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
       for (int r = 0; r < m; ++r)
         Kc[r + kNdof * c] = -fp * g[r] * g[c] + f * (av[r] * C0[c] + bv[r] * C1[c]);
   }
+  // Exactly symmetric: the lower triangle is a copy of the upper one. Where
+  // curve Hessians are added below (symmetric only up to rounding), the copy
+  // is made after them, on the whole matrix.
+  const bool curved = !sa.linear_in_X() || !sb.linear_in_X();
+  if (symmetric && !curved)
+    for (int c = 0; c < m; ++c)
+      for (int r = c + 1; r < m; ++r) Kc[r + kNdof * c] = Kc[c + kNdof * r];
+  // When symmetric the upper triangle is all there is (the lower one is or
+  // will be its copy).
+  bool finite = true;
+  for (int c = 0; c < m && finite; ++c) finite = all_finite(Kc + kNdof * c, symmetric ? c + 1 : m);
   if (Kc != K)
     for (int c = 0; c < m; ++c)
       for (int r = 0; r < m; ++r) K[cols[r] + kNdof * cols[c]] = Kc[r + kNdof * c];
   // Curvature of the smoothed curves in X: only the node-preserving kinds
   // (and host end tangents) are nonlinear in X; the linear kind pays nothing.
-  sa.add_contracted_hessian(xi, n, -f, K, kNdof);
-  sb.add_contracted_hessian(eta, n, f, K + 12 + 12 * kNdof, kNdof);
-  if (symmetric)  // exactly symmetric: the lower triangle is the upper one
-    for (int c = 0; c < kNdof; ++c)
-      for (int r = c + 1; r < kNdof; ++r) K[r + kNdof * c] = K[c + kNdof * r];
+  if (curved) {
+    sa.add_contracted_hessian(xi, n, -f, K, kNdof);
+    sb.add_contracted_hessian(eta, n, f, K + 12 + 12 * kNdof, kNdof);
+    if (symmetric)
+      for (int c = 0; c < kNdof; ++c)
+        for (int r = c + 1; r < kNdof; ++r) K[r + kNdof * c] = K[c + kNdof * r];
+    for (int c = 0; c < kNdof && finite; ++c)
+      finite = all_finite(K + kNdof * c, symmetric ? c + 1 : kNdof);
+  }
+  out.overflow = out.overflow || !finite;
   return fail;
 }
 

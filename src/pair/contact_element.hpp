@@ -22,6 +22,7 @@ struct SegmentInput {
 };
 
 struct PairResult {
+  bool overflow = false;             // an output is not finite (huge penalty x gap)
   int contact_status = 0;            // B2B_CONTACT_*
   double info[kInfoLength] = {0};    // B2B_INFO_*
   double residual[kNdof] = {0};
