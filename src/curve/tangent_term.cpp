@@ -208,12 +208,18 @@ void TangentTerm::add_contracted_hessian(const double* w, double s, double* H, i
     add_block(H, ld, c, a, B);
     return;  // the chord is linear in X: d2u = 0
   }
+  // du_k^T M du_l = (du_l^T M du_k)^T (M is symmetric): compute k <= l only.
   for (int l = 0; l < n_slots_; ++l) {
     double MD[9];
     matmul3(M, du_[l], MD);
-    for (int k = 0; k < n_slots_; ++k) {
+    for (int k = 0; k <= l; ++k) {
       atmb(du_[k], MD, sLL, B);
       add_block(H, ld, slot_[k], slot_[l], B);
+      if (k == l) continue;
+      double Bt[9];
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) Bt[i + 3 * j] = B[j + 3 * i];
+      add_block(H, ld, slot_[l], slot_[k], Bt);
     }
   }
 

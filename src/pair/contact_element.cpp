@@ -46,6 +46,24 @@ bool all_finite(const double* v, int n) {
   return a0 + a1 == 0.0;
 }
 
+// The dense part of the frictionless tangent on the used columns (upper
+// triangle, leading dimension kNdof), the hot loop of the tangent:
+//   K_rc = -fp g_r g_c - fr (J_r.J_c - nJ_r nJ_c - B0_r C0_c - B1_r C1_c).
+void dense_upper(int m, double fp, double fr, const double* g, const double* Jx,
+                 const double* Jy, const double* Jz, const double* nJ, const double* B0,
+                 const double* B1, const double* C0, const double* C1, double* Kc) {
+  for (int c = 0; c < m; ++c) {
+    const double gc = fp * g[c], jx = Jx[c], jy = Jy[c], jz = Jz[c], nc = nJ[c], c0 = C0[c],
+                 c1 = C1[c];
+    double* col = Kc + kNdof * c;
+    for (int r = 0; r <= c; ++r) {
+      const double jqj = Jx[r] * jx + Jy[r] * jy + Jz[r] * jz - nJ[r] * nc;
+      const double bhb = B0[r] * c0 + B1[r] * c1;
+      col[r] = -g[r] * gc - fr * (jqj - bhb);
+    }
+  }
+}
+
 // Column c of a 3 x 12 column-major matrix dotted with v.
 inline double col_dot(const double* M, int c, const double* v) { return dot3(M + 3 * c, v); }
 
@@ -74,7 +92,13 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
 
   out = PairResult();
   std::memcpy(out.history, hist_old, sizeof out.history);
-  if (K) std::memset(K, 0, kNdof * kNdof * sizeof(double));
+  // K is zero unless the pair is active; an active pair with all 24 columns
+  // in use overwrites all of it, so zero it only where that is not so.
+  bool K_zeroed = false;
+  auto zero_K = [&]() {
+    if (K && !K_zeroed) std::memset(K, 0, kNdof * kNdof * sizeof(double));
+    K_zeroed = true;
+  };
   double* info = out.info;
   info[B2B_INFO_SYMMETRIC] = 1.0;
 
@@ -115,6 +139,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
     // this pair's; otherwise the search failed.
     out.contact_status = (std::fabs(xi) > 1.0 || std::fabs(eta) > 1.0) ? B2B_CONTACT_OUTSIDE
                                                                           : B2B_CONTACT_NOT_CONVERGED;
+    zero_K();
     return fail;
   }
   PointState pa, pb;
@@ -150,6 +175,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   const double det = h11 * h22 - h12 * h12;
   if (sin_angle < params.sin_parallel_angle || !(det > 1e-12 * na * na * nb * nb)) {
     out.contact_status = B2B_CONTACT_PARALLEL;
+    zero_K();
     return fail;
   }
 
@@ -161,7 +187,8 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
     // The axes intersect: the normal is undefined, use the previous one.
     if (!has_normal) {
       out.contact_status = B2B_CONTACT_NO_NORMAL;
-      return fail;
+      zero_K();
+    return fail;
     }
     for (int i = 0; i < 3; ++i) n[i] = hist_old[kHistNormal + i];
     gap = -A.radius - B.radius;
@@ -182,6 +209,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   if (!owns(xi, na * unit, len_a, A.end_rule != B2B_END_NEIGHBOUR) ||
       !owns(eta, nb * unit, len_b, B.end_rule != B2B_END_NEIGHBOUR)) {
     out.contact_status = B2B_CONTACT_OUTSIDE;
+    zero_K();
     return fail;
   }
   const LawValue law = normal_law(params, gap);
@@ -189,6 +217,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   info[B2B_INFO_ENERGY] = law.energy;
   if (!(law.force > 0.0)) {
     out.contact_status = B2B_CONTACT_OPEN;
+    zero_K();
     return fail;
   }
   out.contact_status = B2B_CONTACT_ACTIVE;
@@ -259,15 +288,10 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   // compact m x m, leading dimension kNdof; K itself when all columns are used
   double Kbuf[kNdof * kNdof];
   double* Kc = (m == kNdof) ? K : Kbuf;
+  if (m < kNdof) zero_K();  // the unused rows and columns stay zero
   const bool symmetric = rho_signed != 0.0;
   if (symmetric) {  // the upper triangle; mirrored below
-    const double fr = f / rho_signed;
-    for (int c = 0; c < m; ++c)
-      for (int r = 0; r <= c; ++r) {
-        const double jqj = Jx[r] * Jx[c] + Jy[r] * Jy[c] + Jz[r] * Jz[c] - nJ[r] * nJ[c];
-        const double bhb = B0[r] * C0[c] + B1[r] * C1[c];
-        Kc[r + kNdof * c] = -fp * g[r] * g[c] - fr * (jqj - bhb);
-      }
+    dense_upper(m, fp, f / rho_signed, g, Jx, Jy, Jz, nJ, B0, B1, C0, C1, Kc);
   } else {
     // Intersecting axes: the normal is the previous one and does not rotate;
     // what is left of the closest points' motion is not symmetric.
