@@ -23,6 +23,20 @@ inline void add_block(double* H, int ld, int sa, int sb, const double* B) {
     for (int i = 0; i < 3; ++i) h[i + ld * j] += b[i + 3 * j];
 }
 
+// s * [B -B; -B B] on the slot pair (u, v): the second derivative of a
+// function of x_v - x_u whose own second derivative is s * B.
+inline void add_difference_blocks(double* H, int ld, int u, int v, const double* B, double s) {
+  double sb[9], msb[9];
+  for (int k = 0; k < 9; ++k) {
+    sb[k] = s * B[k];
+    msb[k] = -sb[k];
+  }
+  add_block(H, ld, u, u, sb);
+  add_block(H, ld, v, v, sb);
+  add_block(H, ld, u, v, msb);
+  add_block(H, ld, v, u, msb);
+}
+
 // H[3*sa + i, 3*sb + j] += s * delta_ij
 inline void add_identity_block(double* H, int ld, int sa, int sb, double s) {
   for (int i = 0; i < 3; ++i) H[(3 * sa + i) + ld * (3 * sb + i)] += s;
@@ -167,16 +181,10 @@ void TangentTerm::add_contracted_hessian(const double* w, double s, double* H, i
   // w . d2T = sigma [ (w.uhat) d2L + dL (x) g + g (x) dL + L w.d2uhat ]
   const double wu = dot3(w, uhat_);
 
-  // d2L: +QL/L on the (p,p), (q,q) blocks, -QL/L on (p,q), (q,p).
+  // d2L = [QL -QL; -QL QL] / L on the slots (p, q).
   double QL[9], B[9];
   projector(eL_, QL);
-  const double sL = s * sigma * wu / L_;
-  for (int k = 0; k < 9; ++k) B[k] = sL * QL[k];
-  add_block(H, ld, p, p, B);
-  add_block(H, ld, q, q, B);
-  for (int k = 0; k < 9; ++k) B[k] = -B[k];
-  add_block(H, ld, p, q, B);
-  add_block(H, ld, q, p, B);
+  add_difference_blocks(H, ld, p, q, QL, s * sigma * wu / L_);
   if (dir == Dir::Constant) return;
 
   // cw = (I - uhat uhat^T) w / r, so that g = duhat^T w = du^T cw:
@@ -199,13 +207,8 @@ void TangentTerm::add_contracted_hessian(const double* w, double s, double* H, i
     for (int i = 0; i < 3; ++i)
       M[i + 3 * j] = -(wu * Qu[i + 3 * j] / r_ + uhat_[i] * cw[j] + cw[i] * uhat_[j]) / r_;
   const double sLL = s * sigma * L_;
-  if (dir == Dir::Chord) {  // du blocks are -I (slot a) and +I (slot c)
-    for (int k = 0; k < 9; ++k) B[k] = sLL * M[k];
-    add_block(H, ld, a, a, B);
-    add_block(H, ld, c, c, B);
-    for (int k = 0; k < 9; ++k) B[k] = -B[k];
-    add_block(H, ld, a, c, B);
-    add_block(H, ld, c, a, B);
+  if (dir == Dir::Chord) {  // u = x_c - x_a: du^T M du = [M -M; -M M] on (a, c)
+    add_difference_blocks(H, ld, a, c, M, sLL);
     return;  // the chord is linear in X: d2u = 0
   }
   // du_k^T M du_l = (du_l^T M du_k)^T (M is symmetric): compute k <= l only.
