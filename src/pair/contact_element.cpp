@@ -94,10 +94,14 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   std::memcpy(out.history, hist_old, sizeof out.history);
   // K is zero unless the pair is active; an active pair with all 24 columns
   // in use overwrites all of it, so zero it only where that is not so.
-  bool K_zeroed = false;
-  auto zero_K = [&]() {
-    if (K && !K_zeroed) std::memset(K, 0, kNdof * kNdof * sizeof(double));
-    K_zeroed = true;
+  auto zero_K = [K]() {
+    if (K) std::memset(K, 0, kNdof * kNdof * sizeof(double));
+  };
+  // A pair that carries no force: its status, zero residual (already) and K.
+  auto no_force = [&](int status) {
+    out.contact_status = status;
+    zero_K();
+    return fail;
   };
   double* info = out.info;
   info[B2B_INFO_SYMMETRIC] = 1.0;
@@ -137,10 +141,8 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   if (!cp.converged) {
     // An iteration that ran off the segment looked for a point that is not
     // this pair's; otherwise the search failed.
-    out.contact_status = (std::fabs(xi) > 1.0 || std::fabs(eta) > 1.0) ? B2B_CONTACT_OUTSIDE
-                                                                          : B2B_CONTACT_NOT_CONVERGED;
-    zero_K();
-    return fail;
+    const bool ran_off = std::fabs(xi) > 1.0 || std::fabs(eta) > 1.0;
+    return no_force(ran_off ? B2B_CONTACT_OUTSIDE : B2B_CONTACT_NOT_CONVERGED);
   }
   PointState pa, pb;
   sa.point(xi, pa.x, pa.xd, pa.xdd);
@@ -174,9 +176,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   const double h12 = -dot3(ta, tb);
   const double det = h11 * h22 - h12 * h12;
   if (sin_angle < params.sin_parallel_angle || !(det > 1e-12 * na * na * nb * nb)) {
-    out.contact_status = B2B_CONTACT_PARALLEL;
-    zero_K();
-    return fail;
+    return no_force(B2B_CONTACT_PARALLEL);
   }
 
   // Sign-tracked normal and gap.
@@ -186,9 +186,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   if (rho <= tol_length) {
     // The axes intersect: the normal is undefined, use the previous one.
     if (!has_normal) {
-      out.contact_status = B2B_CONTACT_NO_NORMAL;
-      zero_K();
-    return fail;
+      return no_force(B2B_CONTACT_NO_NORMAL);
     }
     for (int i = 0; i < 3; ++i) n[i] = hist_old[kHistNormal + i];
     gap = -A.radius - B.radius;
@@ -208,17 +206,13 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
 
   if (!owns(xi, na * unit, len_a, A.end_rule != B2B_END_NEIGHBOUR) ||
       !owns(eta, nb * unit, len_b, B.end_rule != B2B_END_NEIGHBOUR)) {
-    out.contact_status = B2B_CONTACT_OUTSIDE;
-    zero_K();
-    return fail;
+    return no_force(B2B_CONTACT_OUTSIDE);
   }
   const LawValue law = normal_law(params, gap);
   info[B2B_INFO_NORMAL_FORCE] = law.force;
   info[B2B_INFO_ENERGY] = law.energy;
   if (!(law.force > 0.0)) {
-    out.contact_status = B2B_CONTACT_OPEN;
-    zero_K();
-    return fail;
+    return no_force(B2B_CONTACT_OPEN);
   }
   out.contact_status = B2B_CONTACT_ACTIVE;
 
