@@ -189,8 +189,9 @@ void TangentTerm::add_contracted_hessian(const double* w, double s, double* H, i
 
   // cw = (I - uhat uhat^T) w / r, so that g = duhat^T w = du^T cw:
   // g on slot s is du_s^T cw; dL is -eL on p, +eL on q.
+  const double inv_r = 1.0 / r_;
   double cw[3];
-  for (int i = 0; i < 3; ++i) cw[i] = (w[i] - uhat_[i] * wu) / r_;
+  for (int i = 0; i < 3; ++i) cw[i] = (w[i] - uhat_[i] * wu) * inv_r;
   double mL[3] = {-eL_[0], -eL_[1], -eL_[2]};
   for (int k = 0; k < n_slots_; ++k) {
     double g[3];
@@ -205,7 +206,7 @@ void TangentTerm::add_contracted_hessian(const double* w, double s, double* H, i
   projector(uhat_, Qu);
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
-      M[i + 3 * j] = -(wu * Qu[i + 3 * j] / r_ + uhat_[i] * cw[j] + cw[i] * uhat_[j]) / r_;
+      M[i + 3 * j] = -(wu * inv_r * Qu[i + 3 * j] + uhat_[i] * cw[j] + cw[i] * uhat_[j]) * inv_r;
   const double sLL = s * sigma * L_;
   if (dir == Dir::Chord) {  // u = x_c - x_a: du^T M du = [M -M; -M M] on (a, c)
     add_difference_blocks(H, ld, a, c, M, sLL);

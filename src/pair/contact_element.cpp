@@ -252,6 +252,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   // into contiguous arrays so that the inner loops below vectorise.
   double Jx[kNdof], Jy[kNdof], Jz[kNdof], g[kNdof], nJ[kNdof], B0[kNdof], B1[kNdof];
   double C0[kNdof], C1[kNdof], av[kNdof], bv[kNdof];
+  const double inv_det = inv_unit * inv_unit / det;  // H is in units of unit^2
   for (int k = 0; k < m; ++k) {
     const int c = cols[k];
     const bool on_a = c < 12;
@@ -274,9 +275,8 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
       av[k] = 0.0;
       bv[k] = -col_dot(PBd, cc, n);
     }
-    // H^-1 B, with H in units of unit^2
-    C0[k] = (h22 * B0[k] - h12 * B1[k]) / det * inv_unit * inv_unit;
-    C1[k] = (h11 * B1[k] - h12 * B0[k]) / det * inv_unit * inv_unit;
+    C0[k] = (h22 * B0[k] - h12 * B1[k]) * inv_det;  // H^-1 B
+    C1[k] = (h11 * B1[k] - h12 * B0[k]) * inv_det;
   }
   const double f = law.force, fp = law.slope;
   // compact m x m, leading dimension kNdof; K itself when all columns are used
