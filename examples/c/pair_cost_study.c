@@ -155,7 +155,7 @@ int main(int argc, char **argv) {
     }
   }
 
-  const int trials = quick ? 2 : 9;
+  const int trials = quick ? 2 : 25;
   const int reps[3] = {quick ? 20 : 400, quick ? 20 : 400, quick ? 1 : 12};
   double best[N_KINDS][3];
   for (int k = 0; k < N_KINDS; ++k) best[k][0] = best[k][1] = best[k][2] = 1e300;
