@@ -5,11 +5,13 @@
 
 #include <b2b/b2b.h>
 
+#include "../common/finite.hpp"
 #include "../curve/segment.hpp"
 #include "../curve/topology.hpp"
 #include "firewall.hpp"
 #include "segment_checks.hpp"
 
+using b2b::all_finite;
 using b2b::capi::check_kind;
 using b2b::capi::check_segment;
 using b2b::capi::guarded;
@@ -17,12 +19,6 @@ using b2b::capi::report_segment_failure;
 using b2b::capi::Reporter;
 
 namespace {
-
-bool all_finite(const double* v, int n) {
-  for (int i = 0; i < n; ++i)
-    if (!std::isfinite(v[i])) return false;
-  return true;
-}
 
 int check_beam(const Reporter& r, int kind, int n_nodes, int closed) {
   if (int st = check_kind(r, kind)) return st;

@@ -6,6 +6,7 @@
 
 #include <b2b/b2b.h>
 
+#include "../common/finite.hpp"
 #include "../curve/vec3.hpp"
 #include "closest_point.hpp"
 #include "normal_law.hpp"
@@ -29,21 +30,6 @@ bool owns(double t, double speed, double length, bool beam_ends_here) {
   if (std::fabs(t + 1.0) * speed <= band) return true;
   if (std::fabs(t - 1.0) * speed <= band) return beam_ends_here;
   return t > -1.0 && t < 1.0;
-}
-
-// True if no entry is NaN or infinite: v * 0 is (+-)0 for finite v and NaN
-// otherwise. Two independent sums: the compiler may not reorder (nor
-// vectorise) a floating-point sum, and one chain of dependent additions
-// would cost as much as a linear tangent.
-bool all_finite(const double* v, int n) {
-  double a0 = 0.0, a1 = 0.0;
-  int i = 0;
-  for (; i + 1 < n; i += 2) {
-    a0 += v[i] * 0.0;
-    a1 += v[i + 1] * 0.0;
-  }
-  if (i < n) a0 += v[i] * 0.0;
-  return a0 + a1 == 0.0;
 }
 
 // The dense part of the frictionless tangent on the used columns (upper
