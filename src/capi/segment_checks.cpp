@@ -32,22 +32,18 @@ int unit_tangent(const Reporter& r, const char* beam, const double* t, const cha
 
 }  // namespace
 
-int check_kind(const Reporter& r, int kind) {
-  if (kind < B2B_CURVE_LINEAR || kind > B2B_CURVE_HERMITE_NODAL_WEIGHTED)
-    return r.fail(B2B_ERR_UNKNOWN_KIND,
-                  "unknown curve kind %d (B2B_CURVE_LINEAR .. B2B_CURVE_HERMITE_NODAL_WEIGHTED "
-                  "are 0 .. 3)",
-                  kind);
-  return B2B_OK;
-}
-
-int check_segment(const Reporter& r, const char* beam, int kind, int start_rule, int end_rule,
-                  const double* patch, const double* end_tangents, double unit_tangents[6]) {
+int check_kind(const Reporter& r, int kind, const char* beam) {
   if (kind < B2B_CURVE_LINEAR || kind > B2B_CURVE_HERMITE_NODAL_WEIGHTED)
     return r.fail(B2B_ERR_UNKNOWN_KIND,
                   "%sunknown curve kind %d (B2B_CURVE_LINEAR .. B2B_CURVE_HERMITE_NODAL_WEIGHTED "
                   "are 0 .. 3)",
                   beam, kind);
+  return B2B_OK;
+}
+
+int check_segment(const Reporter& r, const char* beam, int kind, int start_rule, int end_rule,
+                  const double* patch, const double* end_tangents, double unit_tangents[6]) {
+  if (int st = check_kind(r, kind, beam)) return st;
   if (!known_rule(start_rule))
     return r.fail(B2B_ERR_UNKNOWN_KIND, "%sunknown start_rule %d (B2B_END_* are 0 .. 2)", beam,
                   start_rule);

@@ -9,8 +9,9 @@
 namespace b2b {
 namespace capi {
 
-// B2B_ERR_UNKNOWN_KIND unless kind is a B2B_CURVE_* value.
-int check_kind(const Reporter& r, int kind);
+// B2B_ERR_UNKNOWN_KIND unless kind is a B2B_CURVE_* value; `beam` prefixes
+// the message ("" or e.g. "beam A: ").
+int check_kind(const Reporter& r, int kind, const char* beam = "");
 
 // Checks a segment as b2b_segment_eval documents it; on success writes the
 // unit host tangents (6 doubles) where a rule in force is B2B_END_TANGENT.
