@@ -24,6 +24,10 @@
  *   "warm_start"         int   0            1: start the closest-point search
  *                                           from the history's xi, eta
  *   "max_iterations"     int   50           closest-point iterations, 1 .. 100000
+ *   "friction"           real  0            Coulomb coefficient mu >= 0; 0 is
+ *                                           frictionless (and costs nothing)
+ *   "tangential_penalty" real  (required if friction > 0) eps_T > 0, the
+ *                                           stick stiffness (force per length)
  *
  * Normal laws (B2B_LAW_*), f_N >= 0 the compressive normal force, g the gap:
  *   LINEAR     f_N = eps_N max(0, -g)
@@ -87,6 +91,56 @@
  *
  * info[B2B_PAIR_INFO_LEN]: see B2B_INFO_*; unused entries are zero.
  *
+ * Friction (Coulomb; Zavarise and Wriggers 2000, Litewka and Wriggers 2002)
+ * -------------------------------------------------------------------------
+ * With "friction" mu > 0 an active pair also carries a tangential force T,
+ * the friction force that beam A exerts on beam B (B feels +T, A feels -T),
+ * applied at the closest points like the normal force:
+ * residual += [P_A^T T; -P_B^T T] with P = dx/dX at xi, eta.
+ *   Slip measure: the anchor points are the closest points xi_n, eta_n of the
+ *     last committed step (history). The tangential relative displacement of
+ *     A with respect to B since then is, on the current configuration,
+ *         g_T = (I - n n^T) (x_A(xi_n) - x_B(eta_n)),
+ *     the tangential part of the vector between the two material points that
+ *     were in contact ("finite form", contact-notes.md 3). It is zero for any
+ *     rigid motion of both beams, exact for straight beams and finite steps,
+ *     and needs no derivative of the closest points beyond the first.
+ *   Transport: the committed force is stored by its components in the
+ *     orthonormal frame e1 = x_A,xi / |x_A,xi|, e2 = n x e1 at the contact
+ *     and rebuilt in the current frame, so it stays in the tangent plane,
+ *     keeps its magnitude and turns with the beams (objective).
+ *   Return mapping: T_trial = T_n + eps_T g_T; stick if |T_trial| <= mu f_N
+ *     (T = T_trial), else slip: T = mu f_N T_trial / |T_trial|, with slip
+ *     increment (|T_trial| - mu f_N) / eps_T along T and dissipated energy
+ *     mu f_N (|T_trial| - mu f_N) / eps_T >= 0.
+ *   A pair that was not active in the committed step starts in stick with
+ *     T = 0 at the current closest points. A pair that is not active has no
+ *     tangential force and its new history forgets the old one.
+ *   The tangent is the exact derivative of this residual with the old history
+ *     held fixed, and it is NOT symmetric (the slip direction couples to the
+ *     normal force, and the force is transported with the frame): an active
+ *     pair with mu > 0 reports info[B2B_INFO_SYMMETRIC] = 0, and the host
+ *     needs a solver for non-symmetric matrices.
+ *   Not modelled: rotations of the cross-sections (the axis-based contact has
+ *     no rotational unknowns, so friction exerts no torque) and rolling.
+ * The history of a friction parameter set is longer (query its size). Commit
+ * and cut-back work as for any history: hist_old is the committed state, read
+ * only; hist_new the state of this iterate, to be copied on convergence.
+ *
+ * Handover (b2b_pair_history_handover)
+ * ------------------------------------
+ * When the contact point moves across a joint of beam A (or B), the pair of
+ * the neighbouring segment becomes its owner, and its old history must be the
+ * committed history of the previous owner re-expressed in the new segment's
+ * parameter: without it the friction force would restart from zero. The
+ * function maps the anchor parameter t across the joint with the parametric
+ * speeds s at the joint, t' = -1 + (t - 1) s_from / s_to (direction +1, the
+ * next segment) or t' = 1 + (t + 1) s_from / s_to (direction -1), i.e. the
+ * same arc length from the joint to first order, and copies the rest (the
+ * normal, the force components, stick or slip). The two segments must share
+ * the joint (x_from(+-1) = x_to(-+1) to 1e-10 of their length, else
+ * B2B_ERR_RANGE). A history that has no contact is copied as it is.
+ *
  * Bad input: B2B_ERR_NULL, B2B_ERR_STATE (params not finalized),
  * B2B_ERR_UNKNOWN_KIND, B2B_ERR_NONFINITE (coordinates, tangents, radii,
  * history), B2B_ERR_RANGE (a radius outside [0, B2B_COORD_MAX], a coordinate
@@ -132,9 +186,17 @@ enum {
   B2B_INFO_ENERGY = 13,         /* contact potential Pi(g) */
   B2B_INFO_ANGLE = 14,          /* crossing angle of the tangents, degrees in [0, 90] */
   B2B_INFO_ITERATIONS = 15,     /* closest-point iterations used */
-  B2B_INFO_SYMMETRIC = 16       /* 1 if the tangent is symmetric, 0 if not */
+  B2B_INFO_SYMMETRIC = 16,      /* 1 if the tangent is symmetric, 0 if not */
+  B2B_INFO_TANGENTIAL_FORCE = 17, /* friction force T on B by A (A feels -T), 3 entries */
+  B2B_INFO_SLIP = 20,           /* slip increment of A relative to B in this step, 3 entries
+                                   (zero in stick) */
+  B2B_INFO_FRICTION_STATE = 23, /* B2B_FRICTION_* */
+  B2B_INFO_DISSIPATION = 24     /* energy dissipated by slip in this step, >= 0 */
 };
-#define B2B_PAIR_INFO_LEN 32 /* entries 17..31 are reserved (written as 0) */
+#define B2B_PAIR_INFO_LEN 32 /* entries 25..31 are reserved (written as 0) */
+
+/* Friction state of a pair (info[B2B_INFO_FRICTION_STATE]). Values are fixed. */
+enum { B2B_FRICTION_NONE = 0, B2B_FRICTION_STICK = 1, B2B_FRICTION_SLIP = 2 };
 #define B2B_PAIR_NDOF 24
 
 B2B_EXPORT int b2b_params_create(b2b_params **params, char *errmsg, int errmsg_len);
@@ -161,6 +223,22 @@ B2B_EXPORT int b2b_pair_eval(const b2b_params *params, const int segments[6],
                              int hist_len, int *contact_status, double info[32],
                              double residual[24], double *tangent, int ldk, char *errmsg,
                              int errmsg_len);
+
+/* Re-expresses a committed pair history for the neighbouring segment of one
+ * beam (see Handover above). beam: 0 (A) or 1 (B), the beam whose segment
+ * changes; direction: +1 if `to` follows `from` along the beam, -1 if it
+ * precedes it. from_segment / to_segment: kind, start_rule, end_rule;
+ * from_X / to_X: their 12 patch coordinates; *_end_tangents as in
+ * b2b_segment_eval (may be NULL unless a rule is TANGENT). hist_to may be
+ * hist_from. Bad input as for b2b_pair_eval, B2B_ERR_UNKNOWN_KIND for a beam
+ * other than 0, 1 or a direction other than +1, -1. */
+B2B_EXPORT int b2b_pair_history_handover(const b2b_params *params, int beam, int direction,
+                                         const int from_segment[3], const double from_X[12],
+                                         const double from_end_tangents[6],
+                                         const int to_segment[3], const double to_X[12],
+                                         const double to_end_tangents[6],
+                                         const double *hist_from, double *hist_to,
+                                         int hist_len, char *errmsg, int errmsg_len);
 
 #ifdef __cplusplus
 }

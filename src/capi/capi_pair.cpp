@@ -7,9 +7,11 @@
 
 #include "../pair/contact_element.hpp"
 #include "firewall.hpp"
+#include "history_checks.hpp"
 #include "params_handle.hpp"
 #include "segment_checks.hpp"
 
+using b2b::capi::check_history;
 using b2b::capi::check_segment;
 using b2b::capi::guarded;
 using b2b::capi::report_segment_failure;
@@ -19,41 +21,6 @@ namespace pr = b2b::pair;
 namespace {
 
 const char* const kBeam[2] = {"beam A: ", "beam B: "};
-
-int check_history(const Reporter& r, const double* h, int len) {
-  if (len != pr::kHistoryLength)
-    return r.fail(B2B_ERR_SIZE,
-                  "hist_len is %d but this parameter set keeps %d doubles per pair "
-                  "(b2b_params_history_size); a history from another parameter set?",
-                  len, pr::kHistoryLength);
-  for (int i = 0; i < len; ++i)
-    if (!std::isfinite(h[i]))
-      return r.fail(B2B_ERR_NONFINITE, "hist_old[%d] is not finite (%g)", i, h[i]);
-  const double tag = h[pr::kHistTag];
-  if (tag != pr::kHistTagFresh && tag != pr::kHistTagV1)
-    return r.fail(B2B_ERR_RANGE,
-                  "hist_old was not written by b2b_pair_eval (format tag %g); start from a "
-                  "zero-filled history",
-                  tag);
-  if (tag == pr::kHistTagFresh)
-    for (int i = 1; i < len; ++i)
-      if (h[i] != 0.0)
-        return r.fail(B2B_ERR_RANGE,
-                      "hist_old has format tag 0 (fresh) but entry %d is %g: a fresh history is "
-                      "all zeros",
-                      i, h[i]);
-  if (tag == pr::kHistTagV1 && h[pr::kHistHasNormal] != 0.0 && h[pr::kHistHasNormal] != 1.0)
-    return r.fail(B2B_ERR_RANGE, "hist_old has a has-normal flag of %g (0 or 1 expected)",
-                  h[pr::kHistHasNormal]);
-  if (tag == pr::kHistTagV1 && h[pr::kHistHasNormal] == 1.0) {
-    const double* n = h + pr::kHistNormal;
-    const double len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    if (std::fabs(len2 - 1.0) > 1e-8)
-      return r.fail(B2B_ERR_RANGE, "hist_old holds a normal of length %g, not a unit vector",
-                    std::sqrt(len2));
-  }
-  return B2B_OK;
-}
 
 }  // namespace
 
@@ -93,7 +60,7 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
                       radii[b]);
       seg[b] = pr::SegmentInput{s[0], s[1], s[2], X + 12 * b, unit[b], radii[b]};
     }
-    if (int st = check_history(r, hist_old, hist_len)) return st;
+    if (int st = check_history(r, params->p, "hist_old", hist_old, hist_len)) return st;
 
     pr::PairResult out;
     double K[pr::kNdof * pr::kNdof];
@@ -106,7 +73,7 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
                     "reduce the penalty or the penetration",
                     params->p.penalty, out.info[B2B_INFO_GAP]);
 
-    std::memcpy(hist_new, out.history, sizeof out.history);
+    std::memcpy(hist_new, out.history, hist_len * sizeof(double));
     *contact_status = out.contact_status;
     std::memcpy(info, out.info, sizeof out.info);
     std::memcpy(residual, out.residual, sizeof out.residual);

@@ -17,7 +17,9 @@ namespace {
 
 bool is(const char* key, const char* name) { return std::strcmp(key, name) == 0; }
 
-const char kRealKeys[] = "\"penalty\", \"regularization_gap\", \"parallel_angle\"";
+const char kRealKeys[] =
+    "\"penalty\", \"regularization_gap\", \"parallel_angle\", \"friction\", "
+    "\"tangential_penalty\"";
 const char kIntKeys[] = "\"law\", \"warm_start\", \"max_iterations\"";
 
 int check_settable(const Reporter& r, const b2b_params* params, const char* key) {
@@ -54,7 +56,8 @@ int b2b_params_set_real(b2b_params* params, const char* key, double value, char*
   return guarded(r, [&]() -> int {
     if (int st = check_settable(r, params, key)) return st;
     b2b::pair::Params& p = params->p;
-    if (!is(key, "penalty") && !is(key, "regularization_gap") && !is(key, "parallel_angle"))
+    if (!is(key, "penalty") && !is(key, "regularization_gap") && !is(key, "parallel_angle") &&
+        !is(key, "friction") && !is(key, "tangential_penalty"))
       return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%s\" (real keys: %s)", key,
                     kRealKeys);
     if (!std::isfinite(value))
@@ -68,6 +71,14 @@ int b2b_params_set_real(b2b_params* params, const char* key, double value, char*
         return r.fail(B2B_ERR_RANGE, "\"regularization_gap\" = %g must be > 0", value);
       p.regularization_gap = value;
       p.regularization_gap_set = true;
+    } else if (is(key, "friction")) {
+      if (value < 0.0) return r.fail(B2B_ERR_RANGE, "\"friction\" = %g must be >= 0", value);
+      p.friction = value;
+    } else if (is(key, "tangential_penalty")) {
+      if (!(value > 0.0))
+        return r.fail(B2B_ERR_RANGE, "\"tangential_penalty\" = %g must be > 0", value);
+      p.tangential_penalty = value;
+      p.tangential_penalty_set = true;
     } else {  // "parallel_angle"
       if (value < 0.0 || value >= 90.0)
         return r.fail(B2B_ERR_RANGE, "\"parallel_angle\" = %g must be in [0, 90) degrees", value);
@@ -117,6 +128,10 @@ int b2b_params_get_real(const b2b_params* params, const char* key, double* value
       *value = p.regularization_gap;
     else if (is(key, "parallel_angle"))
       *value = p.parallel_angle_deg;
+    else if (is(key, "friction"))
+      *value = p.friction;
+    else if (is(key, "tangential_penalty"))
+      *value = p.tangential_penalty;
     else
       return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%s\" (real keys: %s)", key,
                     kRealKeys);
@@ -155,6 +170,9 @@ int b2b_params_finalize(b2b_params* params, char* errmsg, int errmsg_len) {
     if (p.law == B2B_LAW_QUADRATIC && !p.regularization_gap_set)
       return r.fail(B2B_ERR_STATE,
                     "\"law\" is B2B_LAW_QUADRATIC but \"regularization_gap\" has not been set");
+    if (p.friction > 0.0 && !p.tangential_penalty_set)
+      return r.fail(B2B_ERR_STATE,
+                    "\"friction\" is %g but \"tangential_penalty\" has not been set", p.friction);
     p.sin_parallel_angle = std::sin(p.parallel_angle_deg * 3.14159265358979323846 / 180.0);
     p.finalized = true;
     return B2B_OK;
@@ -168,7 +186,7 @@ int b2b_params_history_size(const b2b_params* params, int* n, char* errmsg, int 
     if (n == nullptr) return r.fail(B2B_ERR_NULL, "n is NULL");
     if (!params->p.finalized)
       return r.fail(B2B_ERR_STATE, "params is not finalized (call b2b_params_finalize first)");
-    *n = b2b::pair::kHistoryLength;
+    *n = b2b::pair::history_length(params->p);
     return B2B_OK;
   });
 }

@@ -9,7 +9,9 @@
 #include "../common/finite.hpp"
 #include "../curve/vec3.hpp"
 #include "closest_point.hpp"
+#include "friction.hpp"
 #include "normal_law.hpp"
+#include "normal_tangent.hpp"
 
 namespace b2b {
 namespace pair {
@@ -30,24 +32,6 @@ bool owns(double t, double speed, double length, bool beam_ends_here) {
   if (std::fabs(t + 1.0) * speed <= band) return true;
   if (std::fabs(t - 1.0) * speed <= band) return beam_ends_here;
   return t > -1.0 && t < 1.0;
-}
-
-// The dense part of the frictionless tangent on the used columns (upper
-// triangle, leading dimension kNdof), the hot loop of the tangent:
-//   K_rc = -fp g_r g_c - fr (J_r.J_c - nJ_r nJ_c - B0_r C0_c - B1_r C1_c).
-void dense_upper(int m, double fp, double fr, const double* g, const double* Jx,
-                 const double* Jy, const double* Jz, const double* nJ, const double* B0,
-                 const double* B1, const double* C0, const double* C1, double* Kc) {
-  for (int c = 0; c < m; ++c) {
-    const double gc = fp * g[c], jx = Jx[c], jy = Jy[c], jz = Jz[c], nc = nJ[c], c0 = C0[c],
-                 c1 = C1[c];
-    double* col = Kc + kNdof * c;
-    for (int r = 0; r <= c; ++r) {
-      const double jqj = Jx[r] * jx + Jy[r] * jy + Jz[r] * jz - nJ[r] * nc;
-      const double bhb = B0[r] * c0 + B1[r] * c1;
-      col[r] = -g[r] * gc - fr * (jqj - bhb);
-    }
-  }
 }
 
 // Column c of a 3 x 12 column-major matrix dotted with v.
@@ -77,7 +61,12 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   }
 
   out = PairResult();
-  std::memcpy(out.history, hist_old, sizeof out.history);
+  const int hist_len = history_length(params);
+  std::memcpy(out.history, hist_old, hist_len * sizeof(double));
+  // Friction history is that of the committed step only if this pair is
+  // active now (set below); a pair without force forgets it.
+  if (hist_len > kHistoryLength)
+    for (int i = kHistoryLength; i < hist_len; ++i) out.history[i] = 0.0;
   // K is zero unless the pair is active; an active pair with all 24 columns
   // in use overwrites all of it, so zero it only where that is not so.
   auto zero_K = [K]() {
@@ -212,9 +201,33 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
     G[12 + c] = -col_dot(PB, c, n);
   }
   for (int c = 0; c < kNdof; ++c) out.residual[c] = -law.force * G[c];
+
+  // Friction: + [P_A^T T; -P_B^T T]. mu = 0 skips all of it.
+  const bool friction = params.friction > 0.0;
+  FrictionContact fc{&sa, &sb, xi, eta, pa.xd, pa.xdd, pb.xd, n, rho_signed, law.force, law.slope};
+  FrictionResult fr;
+  if (friction) {
+    fr = friction_force(params, fc, hist_old);
+    for (int c = 0; c < 12; ++c) {
+      out.residual[c] += col_dot(PA, c, fr.T);
+      out.residual[12 + c] -= col_dot(PB, c, fr.T);
+    }
+    for (int i = 0; i < 3; ++i) {
+      info[B2B_INFO_TANGENTIAL_FORCE + i] = fr.T[i];
+      info[B2B_INFO_SLIP + i] = fr.slip[i];
+    }
+    info[B2B_INFO_FRICTION_STATE] = fr.state;
+    info[B2B_INFO_DISSIPATION] = fr.dissipation;
+    info[B2B_INFO_SYMMETRIC] = 0.0;
+    out.history[kHistInContact] = 1.0;
+    out.history[kHistForceE1] = fr.force_e1;
+    out.history[kHistForceE2] = fr.force_e2;
+    out.history[kHistFrictionState] = fr.state;
+  }
   // A huge penalty times a deep penetration can exceed the double range (the
   // energy grows like penalty * gap^2); the caller reports it.
-  out.overflow = !all_finite(out.info, kInfoLength) || !all_finite(out.residual, kNdof);
+  out.overflow = !all_finite(out.info, kInfoLength) || !all_finite(out.residual, kNdof) ||
+                 !all_finite(out.history, hist_len);
   if (!K) return fail;
 
   // Tangent K = -f' G G^T - f dG/dX with (all total derivatives in X)
@@ -226,67 +239,38 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   // terms fold into B^T/rho, and
   //   K = -f' G G^T - f blockdiag(...) - (f/rho) (J^T (I - n n^T) J - B^T H^-1 B),
   // symmetric: computed on one triangle, over the columns of used slots only.
-  int cols[kNdof], m = 0;
-  const unsigned used[2] = {curve::used_slots(A.kind, A.start_rule, A.end_rule),
-                            curve::used_slots(B.kind, B.start_rule, B.end_rule)};
-  for (int beam = 0; beam < 2; ++beam)
-    for (int slot = 0; slot < 4; ++slot)
-      if (used[beam] & (1u << slot))
-        for (int i = 0; i < 3; ++i) cols[m++] = 12 * beam + 3 * slot + i;
-
-  // The used columns of J (x, y, z rows), G, n.J, B and H^-1 B, compacted
-  // into contiguous arrays so that the inner loops below vectorise.
-  double Jx[kNdof], Jy[kNdof], Jz[kNdof], g[kNdof], nJ[kNdof], B0[kNdof], B1[kNdof];
-  double C0[kNdof], C1[kNdof], av[kNdof], bv[kNdof];
-  const double inv_det = inv_unit * inv_unit / det;  // H is in units of unit^2
-  for (int k = 0; k < m; ++k) {
-    const int c = cols[k];
-    const bool on_a = c < 12;
-    const int cc = on_a ? c : c - 12;
-    const double* P = on_a ? PA : PB;
-    const double sign = on_a ? 1.0 : -1.0;
-    Jx[k] = sign * P[3 * cc];
-    Jy[k] = sign * P[1 + 3 * cc];
-    Jz[k] = sign * P[2 + 3 * cc];
-    g[k] = G[c];
-    nJ[k] = n[0] * Jx[k] + n[1] * Jy[k] + n[2] * Jz[k];
-    if (on_a) {
-      B0[k] = col_dot(PA, cc, pa.xd) + col_dot(PAd, cc, d);
-      B1[k] = -col_dot(PA, cc, pb.xd);
-      av[k] = col_dot(PAd, cc, n);
-      bv[k] = 0.0;
-    } else {
-      B0[k] = -col_dot(PB, cc, pa.xd);
-      B1[k] = col_dot(PB, cc, pb.xd) - col_dot(PBd, cc, d);
-      av[k] = 0.0;
-      bv[k] = -col_dot(PBd, cc, n);
-    }
-    C0[k] = (h22 * B0[k] - h12 * B1[k]) * inv_det;  // H^-1 B
-    C1[k] = (h11 * B1[k] - h12 * B0[k]) * inv_det;
-  }
+  // Friction adds its own, non-symmetric, part (friction.hpp).
+  Linearization lin;
+  const ContactGeometry geo{PA, PAd, PB, PBd, pa.xd, pb.xd, d, n, h11, h12, h22, det, inv_unit};
+  linearize(curve::used_slots(A.kind, A.start_rule, A.end_rule),
+            curve::used_slots(B.kind, B.start_rule, B.end_rule), geo, lin);
+  const int m = lin.m;
+  const int* cols = lin.cols;
   const double f = law.force, fp = law.slope;
   // compact m x m, leading dimension kNdof; K itself when all columns are used
   double Kbuf[kNdof * kNdof];
   double* Kc = (m == kNdof) ? K : Kbuf;
   if (m < kNdof) zero_K();  // the unused rows and columns stay zero
-  const bool symmetric = rho_signed != 0.0;
-  if (symmetric) {  // the upper triangle; mirrored below
-    dense_upper(m, fp, f / rho_signed, g, Jx, Jy, Jz, nJ, B0, B1, C0, C1, Kc);
+  const bool normal_symmetric = rho_signed != 0.0;
+  const bool curved = !sa.linear_in_X() || !sb.linear_in_X();
+  if (normal_symmetric) {  // the upper triangle; mirrored below
+    normal_tangent_upper(lin, fp, f / rho_signed, Kc);
   } else {
     // Intersecting axes: the normal is the previous one and does not rotate;
     // what is left of the closest points' motion is not symmetric.
     info[B2B_INFO_SYMMETRIC] = 0.0;
-    for (int c = 0; c < m; ++c)
-      for (int r = 0; r < m; ++r)
-        Kc[r + kNdof * c] = -fp * g[r] * g[c] + f * (av[r] * C0[c] + bv[r] * C1[c]);
+    normal_tangent_intersecting(lin, fp, f, Kc);
   }
   // Exactly symmetric: the lower triangle is a copy of the upper one. Where
   // curve Hessians are added below (symmetric only up to rounding), the copy
-  // is made after them, on the whole matrix.
-  const bool curved = !sa.linear_in_X() || !sb.linear_in_X();
-  if (symmetric && !curved)
+  // is made after them, on the whole matrix; with friction it is made now,
+  // before the non-symmetric friction part.
+  const bool mirror_now = normal_symmetric && (!curved || friction);
+  if (mirror_now)
     for (int c = 0; c < m; ++c)
       for (int r = c + 1; r < m; ++r) Kc[r + kNdof * c] = Kc[c + kNdof * r];
+  if (friction) add_friction_tangent(params, fc, fr, lin, PAd, PBd, Kc);
+  const bool symmetric = normal_symmetric && !friction;
   // When symmetric the upper triangle is all there is (the lower one is or
   // will be its copy).
   bool finite = true;
@@ -297,8 +281,18 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   // Curvature of the smoothed curves in X: only the node-preserving kinds
   // (and host end tangents) are nonlinear in X; the linear kind pays nothing.
   if (curved) {
-    sa.add_contracted_hessian(xi, n, -f, K, kNdof);
-    sb.add_contracted_hessian(eta, n, f, K + 12 + 12 * kNdof, kNdof);
+    if (friction) {  // weights -f n + T on A, f n - T on B
+      double wa[3], wb[3];
+      for (int i = 0; i < 3; ++i) {
+        wa[i] = fr.T[i] - f * n[i];
+        wb[i] = -wa[i];
+      }
+      sa.add_contracted_hessian(xi, wa, 1.0, K, kNdof);
+      sb.add_contracted_hessian(eta, wb, 1.0, K + 12 + 12 * kNdof, kNdof);
+    } else {
+      sa.add_contracted_hessian(xi, n, -f, K, kNdof);
+      sb.add_contracted_hessian(eta, n, f, K + 12 + 12 * kNdof, kNdof);
+    }
     if (symmetric)
       for (int c = 0; c < kNdof; ++c)
         for (int r = c + 1; r < kNdof; ++r) K[r + kNdof * c] = K[c + kNdof * r];

@@ -1,17 +1,18 @@
 // The point-wise beam-to-beam contact element (Wriggers and Zavarise 1997) on
 // smoothed centrelines: closest points, ownership, sign-tracked normal and
-// gap, normal law, residual and exact tangent (contact-notes.md 1.1-1.4).
+// gap, normal law, Coulomb friction, residual and exact tangent
+// (contact-notes.md 1.1-1.4 and 3).
 // A pure function of its inputs: no state, no allocation.
 #pragma once
 
 #include "../curve/segment.hpp"
 #include "history.hpp"
+#include "linearization.hpp"
 #include "params.hpp"
 
 namespace b2b {
 namespace pair {
 
-constexpr int kNdof = 24;
 constexpr int kInfoLength = 32;
 
 struct SegmentInput {
@@ -26,7 +27,7 @@ struct PairResult {
   int contact_status = 0;            // B2B_CONTACT_*
   double info[kInfoLength] = {0};    // B2B_INFO_*
   double residual[kNdof] = {0};
-  double history[kHistoryLength] = {0};
+  double history[kHistoryLengthMax] = {0};  // history_length(params) used
 };
 
 // A refused pair: the status (B2B_ERR_COINCIDENT or _FOLDED) and which beam

@@ -14,6 +14,9 @@ struct Params {
   double parallel_angle_deg = 0.5;
   int warm_start = 0;
   int max_iterations = 50;
+  double friction = 0.0;  // Coulomb coefficient mu
+  double tangential_penalty = 0.0;
+  bool tangential_penalty_set = false;
   bool finalized = false;
   // derived by finalize
   double sin_parallel_angle = 0.0;

@@ -1,0 +1,142 @@
+#include "friction.hpp"
+
+#include <b2b/b2b.h>
+
+#include "../curve/vec3.hpp"
+#include "history.hpp"
+
+namespace b2b {
+namespace pair {
+namespace {
+
+using curve::dot3;
+using curve::norm3;
+
+inline void cross3(const double* a, const double* b, double* out) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+}  // namespace
+
+FrictionResult friction_force(const Params& p, const FrictionContact& c, const double* hist_old) {
+  FrictionResult fr;
+  fr.state = B2B_FRICTION_STICK;
+  fr.speed_a = norm3(c.ta);
+  for (int i = 0; i < 3; ++i) fr.e1[i] = c.ta[i] / fr.speed_a;
+  cross3(c.n, fr.e1, fr.e2);
+  fr.anchored = hist_old[kHistTag] == kHistTagV1 && hist_old[kHistInContact] == 1.0;
+  if (!fr.anchored) return fr;  // a new contact: stick, no force yet
+
+  fr.committed_e1 = hist_old[kHistForceE1];
+  fr.committed_e2 = hist_old[kHistForceE2];
+  fr.xi_n = hist_old[kHistXi];
+  fr.eta_n = hist_old[kHistEta];
+  double xa[3], xb[3];
+  c.sa->point(fr.xi_n, xa, nullptr, nullptr);
+  c.sb->point(fr.eta_n, xb, nullptr, nullptr);
+  for (int i = 0; i < 3; ++i) fr.anchor_gap[i] = xa[i] - xb[i];
+  // g_T = (I - n n^T)(x_A(xi_n) - x_B(eta_n)); T_trial = T_n + eps_T g_T
+  const double nd = dot3(c.n, fr.anchor_gap);
+  const double eps = p.tangential_penalty;
+  for (int i = 0; i < 3; ++i)
+    fr.trial[i] = fr.committed_e1 * fr.e1[i] + fr.committed_e2 * fr.e2[i] +
+                  eps * (fr.anchor_gap[i] - nd * c.n[i]);
+  fr.trial_norm = norm3(fr.trial);
+  const double limit = p.friction * c.normal_force;
+  if (fr.trial_norm <= limit) {
+    for (int i = 0; i < 3; ++i) fr.T[i] = fr.trial[i];
+  } else {
+    fr.state = B2B_FRICTION_SLIP;
+    const double excess = fr.trial_norm - limit;
+    for (int i = 0; i < 3; ++i) {
+      const double dir = fr.trial[i] / fr.trial_norm;
+      fr.T[i] = limit * dir;
+      fr.slip[i] = excess / eps * dir;
+    }
+    fr.dissipation = limit * excess / eps;
+  }
+  fr.force_e1 = dot3(fr.T, fr.e1);
+  fr.force_e2 = dot3(fr.T, fr.e2);
+  return fr;
+}
+
+void add_friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
+                          const Linearization& lin, const double* PAd, const double* PBd,
+                          double* Kc) {
+  if (!fr.anchored) return;  // T = 0 near this configuration
+  double PAn[36], PBn[36], scratch[36];
+  c.sa->jacobians(fr.xi_n, PAn, scratch);
+  c.sb->jacobians(fr.eta_n, PBn, scratch);
+  const double* n = c.n;
+  const double eps = p.tangential_penalty;
+  const double nd = dot3(n, fr.anchor_gap);
+  const bool slip = fr.state == B2B_FRICTION_SLIP;
+  const double limit = p.friction * c.normal_force;
+  double that[3] = {0, 0, 0};
+  if (slip)
+    for (int i = 0; i < 3; ++i) that[i] = fr.trial[i] / fr.trial_norm;
+  const double ratio = slip ? limit / fr.trial_norm : 1.0;
+
+  // dT/dX column by column (3 x m), and the rows' ( P_A,xi^T T | -P_B,eta^T T ).
+  const int m = lin.m;
+  double Tx[kNdof], Ty[kNdof], Tz[kNdof], u[kNdof], dxi[kNdof], deta[kNdof];
+  for (int k = 0; k < m; ++k) {
+    const int col = lin.cols[k];
+    const bool on_a = col < 12;
+    const int cc = on_a ? col : col - 12;
+    dxi[k] = -lin.C0[k];
+    deta[k] = -lin.C1[k];
+    const double J[3] = {lin.Jx[k], lin.Jy[k], lin.Jz[k]};
+    // dn = (I - n n^T)(J + x_A,xi dxi - x_B,eta deta) / rho
+    double dn[3] = {0, 0, 0};
+    if (c.rho_signed != 0.0) {
+      double v[3];
+      for (int i = 0; i < 3; ++i) v[i] = J[i] + c.ta[i] * dxi[k] - c.tb[i] * deta[k];
+      const double nv = dot3(n, v);
+      for (int i = 0; i < 3; ++i) dn[i] = (v[i] - nv * n[i]) / c.rho_signed;
+    }
+    // de1 = (I - e1 e1^T) d(x_A,xi) / |x_A,xi|, d(x_A,xi) = P_A,xi + x_A,xixi dxi
+    double dta[3], de1[3], de2[3], t1[3], t2[3];
+    for (int i = 0; i < 3; ++i) dta[i] = (on_a ? PAd[3 * cc + i] : 0.0) + c.tad[i] * dxi[k];
+    const double e1dta = dot3(fr.e1, dta);
+    for (int i = 0; i < 3; ++i) de1[i] = (dta[i] - e1dta * fr.e1[i]) / fr.speed_a;
+    cross3(dn, fr.e1, t1);  // de2 = dn x e1 + n x de1
+    cross3(n, de1, t2);
+    for (int i = 0; i < 3; ++i) de2[i] = t1[i] + t2[i];
+    // dg_T = (I - n n^T) J_n - (n . d_n) dn - n (d_n . dn), J_n = [P_A(xi_n), -P_B(eta_n)]
+    double jn[3], dgt[3];
+    for (int i = 0; i < 3; ++i) jn[i] = on_a ? PAn[3 * cc + i] : -PBn[3 * cc + i];
+    const double njn = dot3(n, jn), ddn = dot3(fr.anchor_gap, dn);
+    for (int i = 0; i < 3; ++i) dgt[i] = jn[i] - njn * n[i] - nd * dn[i] - ddn * n[i];
+    double dtr[3];
+    for (int i = 0; i < 3; ++i)
+      dtr[i] = fr.committed_e1 * de1[i] + fr.committed_e2 * de2[i] + eps * dgt[i];
+    // slip: T = mu f_N that, dT = mu that df_N + (mu f_N/|T_tr|)(I - that that^T) dT_tr
+    double dT[3];
+    if (slip) {
+      const double tdt = dot3(that, dtr);
+      const double dfn = p.friction * c.normal_slope * lin.g[k];
+      for (int i = 0; i < 3; ++i) dT[i] = that[i] * dfn + ratio * (dtr[i] - tdt * that[i]);
+    } else {
+      for (int i = 0; i < 3; ++i) dT[i] = dtr[i];
+    }
+    Tx[k] = dT[0];
+    Ty[k] = dT[1];
+    Tz[k] = dT[2];
+    u[k] = on_a ? dot3(PAd + 3 * cc, fr.T) : -dot3(PBd + 3 * cc, fr.T);
+  }
+  // K += J^T dT + [P_A,xi^T T dxi^T; -P_B,eta^T T deta^T]
+  for (int cidx = 0; cidx < m; ++cidx) {
+    double* colp = Kc + kNdof * cidx;
+    const double tx = Tx[cidx], ty = Ty[cidx], tz = Tz[cidx], dx = dxi[cidx], de = deta[cidx];
+    for (int r = 0; r < m; ++r) {
+      const double conv = lin.cols[r] < 12 ? u[r] * dx : u[r] * de;
+      colp[r] += lin.Jx[r] * tx + lin.Jy[r] * ty + lin.Jz[r] * tz + conv;
+    }
+  }
+}
+
+}  // namespace pair
+}  // namespace b2b

@@ -1,0 +1,54 @@
+// Coulomb friction of an active contact pair (Zavarise and Wriggers 2000,
+// Litewka and Wriggers 2002; contact-notes.md 3; the contract is in
+// b2b_pair.h): the slip of the material points that were in contact at the
+// committed step, the committed force carried in the frame of beam A's
+// tangent, the penalty trial force, the return mapping onto the Coulomb cone,
+// and the exact derivative of the friction residual [P_A^T T; -P_B^T T].
+#pragma once
+
+#include "../curve/segment.hpp"
+#include "linearization.hpp"
+#include "params.hpp"
+
+namespace b2b {
+namespace pair {
+
+// The current contact, as the friction law needs it.
+struct FrictionContact {
+  const curve::Segment *sa, *sb;
+  double xi, eta;
+  const double *ta, *tad;  // x_A,xi and x_A,xixi
+  const double* tb;        // x_B,eta
+  const double* n;         // unit normal from B to A
+  double rho_signed;       // signed axis distance; 0 where the normal is the history's
+  double normal_force, normal_slope;  // f_N > 0 and df_N/dg
+};
+
+struct FrictionResult {
+  bool anchored = false;  // the committed step was in contact (else T = 0: stick from here)
+  int state = 0;          // B2B_FRICTION_STICK or _SLIP
+  double T[3] = {0, 0, 0};         // force on B by A
+  double slip[3] = {0, 0, 0};      // slip increment (zero in stick)
+  double dissipation = 0.0;
+  double force_e1 = 0.0, force_e2 = 0.0;  // T in the current frame: the new history
+  // kept for the tangent
+  double e1[3] = {0, 0, 0}, e2[3] = {0, 0, 0}, speed_a = 0.0;
+  double committed_e1 = 0.0, committed_e2 = 0.0;  // committed force in the frame
+  double xi_n = 0.0, eta_n = 0.0;
+  double anchor_gap[3] = {0, 0, 0};  // x_A(xi_n) - x_B(eta_n)
+  double trial[3] = {0, 0, 0}, trial_norm = 0.0;
+};
+
+// hist_old: the pair's committed history (friction layout, validated).
+FrictionResult friction_force(const Params& p, const FrictionContact& c, const double* hist_old);
+
+// Kc += d[P_A^T T; -P_B^T T]/dX on the used columns (m x m, leading
+// dimension kNdof), except the curves' second derivatives in X, which the
+// caller adds with the weights T (beam A) and -T (beam B). PAd, PBd: the
+// 3x12 jacobians of x_A,xi and x_B,eta at the contact.
+void add_friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
+                          const Linearization& lin, const double* PAd, const double* PBd,
+                          double* Kc);
+
+}  // namespace pair
+}  // namespace b2b

@@ -1,0 +1,33 @@
+#include "handover.hpp"
+
+#include "../curve/vec3.hpp"
+#include "history.hpp"
+
+namespace b2b {
+namespace pair {
+
+HandoverResult handover_history(const curve::Segment& from, const curve::Segment& to, int beam,
+                                int direction, double* hist, int /*len*/) {
+  HandoverResult res;
+  // The joint: from's end and to's start (direction +1), or the reverse.
+  const double t_from = direction > 0 ? 1.0 : -1.0, t_to = -t_from;
+  double xf[3], df[3], xt[3], dt[3], chord[3], gap[3];
+  from.point(t_from, xf, df, nullptr);
+  to.point(t_to, xt, dt, nullptr);
+  curve::sub3(xf, xt, gap);
+  curve::sub3(from.end_point(), from.start_point(), chord);
+  double scale = curve::norm3(chord);
+  curve::sub3(to.end_point(), to.start_point(), chord);
+  scale += curve::norm3(chord);
+  res.mismatch = curve::norm3(gap) / scale;
+  res.adjacent = res.mismatch <= kJointMismatch;
+  if (!res.adjacent || hist[kHistTag] != kHistTagV1) return res;
+  // Same arc length from the joint, to first order: (t - t_from) s_from = (t' - t_to) s_to.
+  const double ratio = curve::norm3(df) / curve::norm3(dt);
+  double& t = hist[beam == 0 ? kHistXi : kHistEta];
+  t = t_to + (t - t_from) * ratio;
+  return res;
+}
+
+}  // namespace pair
+}  // namespace b2b
