@@ -29,6 +29,8 @@
  *   "tangential_penalty" real  (required if friction > 0) eps_T > 0, the
  *                                           stick stiffness (force per length)
  *
+ * Finalize fails with B2B_ERR_STATE if a required option is missing.
+ *
  * Normal laws (B2B_LAW_*), f_N >= 0 the compressive normal force, g the gap:
  *   LINEAR     f_N = eps_N max(0, -g)
  *   QUADRATIC  C1 regularised: f_N = eps_N (g0/2 - g) for g <= 0,
@@ -139,13 +141,16 @@
  * same arc length from the joint to first order, and copies the rest (the
  * normal, the force components, stick or slip). The two segments must share
  * the joint (x_from(+-1) = x_to(-+1) to 1e-10 of their length, else
- * B2B_ERR_RANGE). A history that has no contact is copied as it is.
+ * B2B_ERR_RANGE). The parameter is mapped whether or not the history holds a
+ * contact (without one it is the warm start's point); a fresh (all-zero)
+ * history is copied unchanged.
  *
  * Bad input: B2B_ERR_NULL, B2B_ERR_STATE (params not finalized),
  * B2B_ERR_UNKNOWN_KIND, B2B_ERR_NONFINITE (coordinates, tangents, radii,
  * history), B2B_ERR_RANGE (a radius outside [0, B2B_COORD_MAX], a coordinate
  * beyond B2B_COORD_MAX, a history not written by b2b: a foreign format tag, a
- * "fresh" history that is not all zeros, a flag or normal out of range; and a
+ * "fresh" history that is not all zeros, a flag, normal or friction state out
+ * of range, a tangential force in a history that is not in contact; and a
  * force, energy or tangent that would overflow, from a huge penalty times a
  * deep penetration), B2B_ERR_SIZE (history length, ldk < 24), and each
  * segment's own bad input exactly as for b2b_segment_eval (unknown kind or
