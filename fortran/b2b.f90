@@ -10,13 +10,15 @@
 !>  * contact:  type(b2b_params) with b2b_params_create, b2b_params_destroy,
 !>              b2b_params_set_real, b2b_params_set_int, b2b_params_get_real,
 !>              b2b_params_get_int, b2b_params_finalize, b2b_params_history_size;
-!>              b2b_pair_eval
+!>              b2b_pair_eval (with Coulomb friction), b2b_pair_history_handover
 !>
 !> Conventions of the wrappers:
 !>  * Arrays are assumed-shape and must be contiguous (sections are copied in
 !>    by the compiler); their shapes are checked, a wrong shape gives
 !>    B2B_ERR_SIZE. Node coordinates are (3, nodes) arrays.
-!>  * Node and segment numbers are 1-based; a missing node is 0.
+!>  * Node and segment numbers are 1-based; a missing node is 0. The two beams
+!>    of a pair are numbered 1 (A) and 2 (B), as the columns of segments(3,2)
+!>    of b2b_pair_eval (beam of b2b_pair_history_handover).
 !>  * Constants that index a C array (B2B_INFO_*) keep their 0-based C
 !>    values: the C entry info[B2B_INFO_GAP] is info(B2B_INFO_GAP + 1).
 !>  * A C handle is a derived type with a private pointer (type(b2b_params)),
@@ -40,7 +42,7 @@ module b2b
   public :: b2b_segment_eval, b2b_beam_segment_count, b2b_beam_segment_patch
   public :: b2b_params_create, b2b_params_destroy, b2b_params_set_real, b2b_params_set_int
   public :: b2b_params_get_real, b2b_params_get_int, b2b_params_finalize
-  public :: b2b_params_history_size, b2b_pair_eval
+  public :: b2b_params_history_size, b2b_pair_eval, b2b_pair_history_handover
 
   !> Contact parameters (b2b_params in C): an opaque handle, null until
   !> b2b_params_create. Set options by key, finalize, then pass it to
@@ -196,6 +198,28 @@ module b2b
       real(c_double), intent(inout) :: info(*), residual(*)
       type(c_ptr), value :: tangent
       integer(c_int), value :: ldk
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_pair_history_handover(params, beam, direction, from_segment, from_X, &
+                                         from_end_tangents, to_segment, to_X, &
+                                         to_end_tangents, hist_from, hist_to, hist_len, &
+                                         errmsg, errmsg_len) &
+        bind(C, name='b2b_pair_history_handover') result(st)
+      import :: c_int, c_double, c_ptr, c_char
+      type(c_ptr), value :: params
+      integer(c_int), value :: beam, direction
+      integer(c_int), intent(in) :: from_segment(3)
+      real(c_double), intent(in) :: from_X(*)
+      type(c_ptr), value :: from_end_tangents
+      integer(c_int), intent(in) :: to_segment(3)
+      real(c_double), intent(in) :: to_X(*)
+      type(c_ptr), value :: to_end_tangents
+      real(c_double), intent(in) :: hist_from(*)
+      real(c_double), intent(inout) :: hist_to(*)
+      integer(c_int), value :: hist_len
       character(kind=c_char), intent(inout) :: errmsg(*)
       integer(c_int), value :: errmsg_len
       integer(c_int) :: st
@@ -499,12 +523,15 @@ contains
   !>                        a distinct array (copy it into hist_old to commit)
   !>   contact_status       B2B_CONTACT_* (a physical outcome, not an error)
   !>   info(32)             B2B_INFO_*: the C entry info[k] is info(k + 1)
+  !>                        (with friction also the tangential force, slip,
+  !>                        B2B_FRICTION_* state and dissipation)
   !>   residual(24)         the contact contribution to the internal forces
   !>   tangent(ldk,24)      d residual/dX in rows 1..24, ldk = size(tangent,1)
   !>                        >= 24 (rows 25..ldk are not touched)
   !>   end_tangents(3,4)    host end tangents: A's first and last node, then
   !>                        B's; needed only where a rule is B2B_END_TANGENT
-  !> An absent tangent is not computed (which is cheaper).
+  !> An absent tangent is not computed (which is cheaper). With "friction" > 0
+  !> an active pair's tangent is not symmetric (info(B2B_INFO_SYMMETRIC + 1) = 0).
   subroutine b2b_pair_eval(params, segments, X, radii, hist_old, hist_new, contact_status, &
                            info, residual, tangent, end_tangents, ierr, errmsg)
     type(b2b_params), intent(in) :: params
@@ -587,6 +614,115 @@ contains
                            residual, pk, ldk, buf, int(size(buf), c_int))
     end if
     if (st == B2B_OK) contact_status = cstatus
+    call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Re-expresses a committed pair history for the neighbouring segment of one
+  !> beam, when the contact point crosses a joint of that beam (Handover in
+  !> the C header b2b_pair.h: the anchor parameter is mapped across the joint,
+  !> the rest is copied).
+  !>   params               a finalized parameter handle (the pair's)
+  !>   beam                 1 (A) or 2 (B): the beam whose segment changes, as
+  !>                        the columns of segments(3,2) of b2b_pair_eval
+  !>                        (C: 0 or 1); anything else is B2B_ERR_UNKNOWN_KIND
+  !>   direction            +1 if `to` follows `from` along the beam, -1 if it
+  !>                        precedes it (else B2B_ERR_UNKNOWN_KIND)
+  !>   from_segment(3)      kind, start_rule, end_rule of the old segment
+  !>   from_X(3,4)          its patch nodes x1..x4
+  !>   to_segment(3), to_X(3,4)  the same for the new segment
+  !>   hist_from(:)         the committed history of the old pair
+  !>                        (b2b_params_history_size doubles)
+  !>   hist_to(:)           the history for the new pair, of the same size; a
+  !>                        distinct array (to hand over in place, pass a copy
+  !>                        of hist_from)
+  !>   from_end_tangents(3,2), to_end_tangents(3,2)
+  !>                        host end tangents (first node, last node) of each
+  !>                        segment; needed only where a rule is B2B_END_TANGENT
+  !> Segments that do not share the joint give B2B_ERR_RANGE.
+  subroutine b2b_pair_history_handover(params, beam, direction, from_segment, from_X, &
+                                       to_segment, to_X, hist_from, hist_to, &
+                                       from_end_tangents, to_end_tangents, ierr, errmsg)
+    type(b2b_params), intent(in) :: params
+    integer, intent(in) :: beam, direction
+    integer, intent(in), contiguous :: from_segment(:)
+    real(c_double), intent(in), contiguous :: from_X(:, :)
+    integer, intent(in), contiguous :: to_segment(:)
+    real(c_double), intent(in), contiguous :: to_X(:, :)
+    real(c_double), intent(in), contiguous :: hist_from(:)
+    real(c_double), intent(inout), contiguous :: hist_to(:)
+    real(c_double), intent(in), contiguous, target, optional :: from_end_tangents(:, :)
+    real(c_double), intent(in), contiguous, target, optional :: to_end_tangents(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_pair_history_handover'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    type(c_ptr) :: ptf, ptt
+    integer(c_int) :: st, cfrom(3), cto(3)
+    real(c_double) :: h0(1), h1(1)
+
+    if (.not. shape_is(shape(from_segment), [3])) then
+      call finish_size(me, 'from_segment', shape(from_segment), [3], ierr, errmsg)
+      return
+    end if
+    if (.not. shape_is(shape(from_X), [3, 4])) then
+      call finish_size(me, 'from_X', shape(from_X), [3, 4], ierr, errmsg)
+      return
+    end if
+    if (.not. shape_is(shape(to_segment), [3])) then
+      call finish_size(me, 'to_segment', shape(to_segment), [3], ierr, errmsg)
+      return
+    end if
+    if (.not. shape_is(shape(to_X), [3, 4])) then
+      call finish_size(me, 'to_X', shape(to_X), [3, 4], ierr, errmsg)
+      return
+    end if
+    if (size(hist_to) /= size(hist_from)) then
+      call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': hist_from and hist_to ' // &
+                       'differ in size (' // trim(int_text(size(hist_from))) // ' and ' // &
+                       trim(int_text(size(hist_to))) // ')', ierr, errmsg)
+      return
+    end if
+    ptf = c_null_ptr
+    ptt = c_null_ptr
+    if (present(from_end_tangents)) then
+      if (.not. shape_is(shape(from_end_tangents), [3, 2])) then
+        call finish_size(me, 'from_end_tangents', shape(from_end_tangents), [3, 2], ierr, &
+                         errmsg)
+        return
+      end if
+      ptf = c_loc(from_end_tangents)
+    end if
+    if (present(to_end_tangents)) then
+      if (.not. shape_is(shape(to_end_tangents), [3, 2])) then
+        call finish_size(me, 'to_end_tangents', shape(to_end_tangents), [3, 2], ierr, errmsg)
+        return
+      end if
+      ptt = c_loc(to_end_tangents)
+    end if
+    ! The C function numbers the beams 0, 1: check the 1-based number here so
+    ! that the message speaks of the caller's value.
+    if (beam /= 1 .and. beam /= 2) then
+      call finish_text(me, int(B2B_ERR_UNKNOWN_KIND, c_int), me // ': beam is ' // &
+                       trim(int_text(beam)) // ': 1 (beam A) or 2 (beam B) expected', &
+                       ierr, errmsg)
+      return
+    end if
+    cfrom = int(from_segment, c_int)
+    cto = int(to_segment, c_int)
+    buf = c_null_char
+    if (size(hist_from) > 0) then
+      st = c_b2b_pair_history_handover(params%ptr, int(beam - 1, c_int), &
+                                       int(direction, c_int), cfrom, from_X, ptf, cto, to_X, &
+                                       ptt, hist_from, hist_to, int(size(hist_from), c_int), &
+                                       buf, int(size(buf), c_int))
+    else
+      ! A zero-size array may have any address, even NULL: pass a dummy and
+      ! let the library report the length.
+      h0 = 0
+      st = c_b2b_pair_history_handover(params%ptr, int(beam - 1, c_int), &
+                                       int(direction, c_int), cfrom, from_X, ptf, cto, to_X, &
+                                       ptt, h0, h1, 0_c_int, buf, int(size(buf), c_int))
+    end if
     call finish(me, st, buf, ierr, errmsg)
   end subroutine
 

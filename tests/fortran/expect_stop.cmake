@@ -1,13 +1,17 @@
 # Runs PROGRAM (ftest_stop_without_ierr) and checks that module b2b stopped it:
 # a non-zero exit status, the status and the library's message on stderr, and
 # no sign that the failing call returned.
-#   cmake -DPROGRAM=<path> [-DMODE=errmsg] -P expect_stop.cmake
+#   cmake -DPROGRAM=<path> [-DMODE=errmsg|handover] -P expect_stop.cmake
 if(NOT DEFINED PROGRAM)
   message(FATAL_ERROR "expect_stop.cmake: PROGRAM is not set")
 endif()
 set(_args "")
+set(_want "b2b error 4: b2b_segment_eval: unknown curve kind 17")
 if(MODE STREQUAL "errmsg")
   set(_args errmsg)
+elseif(MODE STREQUAL "handover")
+  set(_args handover)
+  set(_want "b2b error 4: b2b_pair_history_handover: beam is 3: 1 (beam A) or 2 (beam B)")
 endif()
 execute_process(COMMAND "${PROGRAM}" ${_args}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -23,7 +27,6 @@ endif()
 if(out MATCHES "ERROR: returned")
   message(FATAL_ERROR "the failing call returned to the program")
 endif()
-set(_want "b2b error 4: b2b_segment_eval: unknown curve kind 17")
 string(FIND "${err}" "${_want}" _at)
 if(_at EQUAL -1)
   message(FATAL_ERROR "stderr lacks \"${_want}\"")
