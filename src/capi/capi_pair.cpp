@@ -67,6 +67,12 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
     const pr::PairFailure f =
         pr::evaluate_pair(params->p, seg[0], seg[1], hist_old, out, tangent ? K : nullptr);
     if (f.status != B2B_OK) return report_segment_failure(r, kBeam[f.beam], f.segment);
+    if (out.overflow && params->p.friction > 0.0)
+      return r.fail(B2B_ERR_RANGE,
+                    "the contact force, energy or tangent overflows (penalty %g, "
+                    "tangential_penalty %g, gap %g): reduce the penalties, the penetration or "
+                    "the slip per step",
+                    params->p.penalty, params->p.tangential_penalty, out.info[B2B_INFO_GAP]);
     if (out.overflow)
       return r.fail(B2B_ERR_RANGE,
                     "the contact force, energy or tangent overflows (penalty %g, gap %g): "

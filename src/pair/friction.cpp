@@ -1,5 +1,7 @@
 #include "friction.hpp"
 
+#include <cmath>
+
 #include <b2b/b2b.h>
 
 #include "../curve/vec3.hpp"
@@ -43,7 +45,9 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   for (int i = 0; i < 3; ++i)
     fr.trial[i] = fr.committed_e1 * fr.e1[i] + fr.committed_e2 * fr.e2[i] +
                   eps * (fr.anchor_gap[i] - nd * c.n[i]);
-  fr.trial_norm = norm3(fr.trial);
+  // hypot: |T_trial| neither underflows nor overflows where T_trial does not
+  // (a tiny trial force read as zero would stick beyond the Coulomb limit).
+  fr.trial_norm = std::hypot(fr.trial[0], fr.trial[1], fr.trial[2]);
   const double limit = p.friction * c.normal_force;
   if (fr.trial_norm <= limit) {
     for (int i = 0; i < 3; ++i) fr.T[i] = fr.trial[i];
@@ -55,7 +59,7 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
       fr.T[i] = limit * dir;
       fr.slip[i] = excess / eps * dir;
     }
-    fr.dissipation = limit * excess / eps;
+    fr.dissipation = limit * (excess / eps);
   }
   fr.force_e1 = dot3(fr.T, fr.e1);
   fr.force_e2 = dot3(fr.T, fr.e2);
