@@ -13,7 +13,7 @@
  *   friction_newton [--quick]      (--quick is accepted for ctest)
  *
  * Prints the residual norms of every iteration and the convergence order
- * estimated from the last iterations clear of round-off; then solves the
+ * estimated from the last three norms clear of round-off; then solves the
  * same history with the symmetric part of the tangent (what a host with a
  * symmetric solver would do) and counts its iterations. "Newton: quadratic"
  * if every step converged with order >= 1.5 and in fewer iterations in all
@@ -105,15 +105,15 @@ static int run(b2b_params *p, int symmetrize, int print, int *ok) {
       for (int i = 0; i < 12; ++i) X[i] += R[i];
     }
     total += it;
-    /* Order from the last three norms that are clear of round-off (> 1e-9):
-     * log(r2/r1) / log(r1/r0). */
+    /* Convergence order log(r2/r1) / log(r1/r0) of the last three norms
+     * clear of round-off (> 1e-11; the floor is about 1e-13). */
     double order = NAN;
     int last = it;
-    while (last >= 0 && norms[last] <= 1e-9) --last;
+    while (last >= 0 && norms[last] <= 1e-11) --last;
     if (last >= 2)
       order = log(norms[last] / norms[last - 1]) / log(norms[last - 1] / norms[last - 2]);
     const int converged = norms[it] < 1e-11;
-    if (!converged || (!symmetrize && last >= 2 && !(order >= 1.5))) *ok = 0;
+    if (!converged || (!symmetrize && !isnan(order) && !(order >= 1.5))) *ok = 0;
     if (print) {
       const int state = (int)info[B2B_INFO_FRICTION_STATE];
       static const char *names[3] = {"-", "stick", "slip"};

@@ -111,3 +111,45 @@ int tst_pair(const b2b_params *params, const tst_pair_spec *spec, const double X
   ck_assert_msg(st == B2B_OK, "b2b_pair_eval returned %d: %s", st, msg);
   return status;
 }
+
+b2b_params *tst_params_friction(int law, double penalty, double g0, double mu, double eps_t) {
+  b2b_params *p = NULL;
+  char msg[B2B_ERRMSG_LEN] = "";
+  ck_assert_int_eq(b2b_params_create(&p, msg, sizeof msg), B2B_OK);
+  ck_assert_int_eq(b2b_params_set_real(p, "penalty", penalty, msg, sizeof msg), B2B_OK);
+  ck_assert_int_eq(b2b_params_set_int(p, "law", law, msg, sizeof msg), B2B_OK);
+  if (law == B2B_LAW_QUADRATIC)
+    ck_assert_int_eq(b2b_params_set_real(p, "regularization_gap", g0, msg, sizeof msg), B2B_OK);
+  ck_assert_msg(b2b_params_set_real(p, "friction", mu, msg, sizeof msg) == B2B_OK, "friction: %s",
+                msg);
+  if (eps_t > 0)
+    ck_assert_msg(b2b_params_set_real(p, "tangential_penalty", eps_t, msg, sizeof msg) == B2B_OK,
+                  "tangential_penalty: %s", msg);
+  ck_assert_msg(b2b_params_finalize(p, msg, sizeof msg) == B2B_OK, "finalize: %s", msg);
+  return p;
+}
+
+int tst_history_len(const b2b_params *params) {
+  int n = -1;
+  char msg[B2B_ERRMSG_LEN] = "";
+  ck_assert_msg(b2b_params_history_size(params, &n, msg, sizeof msg) == B2B_OK,
+                "history_size: %s", msg);
+  return n;
+}
+
+int tst_pair_ext(const b2b_params *params, const tst_pair_spec *spec, const double X[24],
+                 const double end_tangents[12], const double *hist_old, double *hist_new,
+                 double info[32], double residual[24], double *tangent) {
+  const int segments[6] = {spec->kind[0], spec->start_rule[0], spec->end_rule[0],
+                           spec->kind[1], spec->start_rule[1], spec->end_rule[1]};
+  const double defaults[12] = {1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0};
+  double fresh[64] = {0}, scratch[64];
+  int n = tst_history_len(params), status = -1;
+  char msg[B2B_ERRMSG_LEN] = "";
+  const int st = b2b_pair_eval(params, segments, X, end_tangents ? end_tangents : defaults,
+                               spec->radius, hist_old ? hist_old : fresh,
+                               hist_new ? hist_new : scratch, n, &status, info, residual, tangent,
+                               24, msg, sizeof msg);
+  ck_assert_msg(st == B2B_OK, "b2b_pair_eval returned %d: %s", st, msg);
+  return status;
+}

@@ -26,4 +26,17 @@ int tst_pair(const b2b_params *params, const tst_pair_spec *spec, const double X
              const double *hist_old, double *hist_new, double info[32], double residual[24],
              double *tangent);
 
+/* A finalized parameter set with Coulomb friction: "friction" = mu and, if
+ * eps_t > 0, "tangential_penalty" = eps_t (fails the test on error). */
+b2b_params *tst_params_friction(int law, double penalty, double g0, double mu, double eps_t);
+
+/* b2b_params_history_size (fails the test on error). */
+int tst_history_len(const b2b_params *params);
+
+/* tst_pair with the host's end tangents (A's two, then B's two; NULL: the
+ * defaults tst_pair uses). */
+int tst_pair_ext(const b2b_params *params, const tst_pair_spec *spec, const double X[24],
+                 const double end_tangents[12], const double *hist_old, double *hist_new,
+                 double info[32], double residual[24], double *tangent);
+
 #endif
