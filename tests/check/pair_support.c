@@ -3,7 +3,8 @@
 #include <math.h>
 #include <string.h>
 
-b2b_params *tst_params(int law, double penalty, double g0) {
+/* A parameter set with the normal law, not yet finalized. */
+static b2b_params *normal_params(int law, double penalty, double g0) {
   b2b_params *p = NULL;
   char msg[B2B_ERRMSG_LEN] = "";
   ck_assert_int_eq(b2b_params_create(&p, msg, sizeof msg), B2B_OK);
@@ -11,8 +12,17 @@ b2b_params *tst_params(int law, double penalty, double g0) {
   ck_assert_int_eq(b2b_params_set_int(p, "law", law, msg, sizeof msg), B2B_OK);
   if (law == B2B_LAW_QUADRATIC)
     ck_assert_int_eq(b2b_params_set_real(p, "regularization_gap", g0, msg, sizeof msg), B2B_OK);
+  return p;
+}
+
+static b2b_params *finalized(b2b_params *p) {
+  char msg[B2B_ERRMSG_LEN] = "";
   ck_assert_msg(b2b_params_finalize(p, msg, sizeof msg) == B2B_OK, "finalize: %s", msg);
   return p;
+}
+
+b2b_params *tst_params(int law, double penalty, double g0) {
+  return finalized(normal_params(law, penalty, g0));
 }
 
 static void cross(const double *a, const double *b, double *c) {
@@ -113,20 +123,14 @@ int tst_pair(const b2b_params *params, const tst_pair_spec *spec, const double X
 }
 
 b2b_params *tst_params_friction(int law, double penalty, double g0, double mu, double eps_t) {
-  b2b_params *p = NULL;
+  b2b_params *p = normal_params(law, penalty, g0);
   char msg[B2B_ERRMSG_LEN] = "";
-  ck_assert_int_eq(b2b_params_create(&p, msg, sizeof msg), B2B_OK);
-  ck_assert_int_eq(b2b_params_set_real(p, "penalty", penalty, msg, sizeof msg), B2B_OK);
-  ck_assert_int_eq(b2b_params_set_int(p, "law", law, msg, sizeof msg), B2B_OK);
-  if (law == B2B_LAW_QUADRATIC)
-    ck_assert_int_eq(b2b_params_set_real(p, "regularization_gap", g0, msg, sizeof msg), B2B_OK);
   ck_assert_msg(b2b_params_set_real(p, "friction", mu, msg, sizeof msg) == B2B_OK, "friction: %s",
                 msg);
   if (eps_t > 0)
     ck_assert_msg(b2b_params_set_real(p, "tangential_penalty", eps_t, msg, sizeof msg) == B2B_OK,
                   "tangential_penalty: %s", msg);
-  ck_assert_msg(b2b_params_finalize(p, msg, sizeof msg) == B2B_OK, "finalize: %s", msg);
-  return p;
+  return finalized(p);
 }
 
 int tst_history_len(const b2b_params *params) {
