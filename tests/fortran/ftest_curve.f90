@@ -1,7 +1,7 @@
 !> Parity and behaviour of module b2b's curve procedures.
 !>
 !> The heart of it: every call of b2b_segment_eval through the module is
-!> repeated through a private bind(C) interface to the C function, with flat
+!> repeated through the direct bind(C) interface of module ftest_capi, with flat
 !> arrays of 9, 72 and 864 doubles, and the two results must agree bit for bit
 !> under the documented layout
 !>   x(i,k)       = C x[i + 3k]
@@ -16,20 +16,8 @@ program ftest_curve
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use b2b
   use ftest_check
+  use ftest_capi
   implicit none
-
-  interface
-    function c_segment_eval(kind, start_rule, end_rule, patch, end_tangents, xi, x, dx, d2x, &
-                            errmsg, errmsg_len) bind(C, name='b2b_segment_eval') result(st)
-      import :: c_int, c_double, c_ptr
-      integer(c_int), value :: kind, start_rule, end_rule
-      type(c_ptr), value :: patch, end_tangents
-      real(c_double), value :: xi
-      type(c_ptr), value :: x, dx, d2x, errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-  end interface
 
   integer, parameter :: kinds(4) = [B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, &
                                     B2B_CURVE_HERMITE_NODAL, B2B_CURVE_HERMITE_NODAL_WEIGHTED]

@@ -2,7 +2,7 @@
 !> b2b_params_*, b2b_pair_eval).
 !>
 !> The heart of it: every b2b_pair_eval through the module is repeated through
-!> the test's own bind(C) interface to the C function, with flat arrays and a
+!> the direct bind(C) interface of module ftest_capi, with flat arrays and a
 !> parameter handle created by direct C calls with the same options, and the
 !> two results (status, info, residual, tangent, new history) must agree bit
 !> for bit, with the tangent present and absent, with a leading dimension of 24
@@ -19,78 +19,8 @@ program ftest_pair
                                          c_null_char, c_associated
   use b2b
   use ftest_check
+  use ftest_capi
   implicit none
-
-  interface
-    function c_params_create(params, errmsg, errmsg_len) bind(C, name='b2b_params_create') &
-        result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), intent(inout) :: params
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_params_destroy(params) bind(C, name='b2b_params_destroy') result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), intent(inout) :: params
-      integer(c_int) :: st
-    end function
-
-    function c_params_set_real(params, key, value, errmsg, errmsg_len) &
-        bind(C, name='b2b_params_set_real') result(st)
-      import :: c_int, c_double, c_ptr, c_char
-      type(c_ptr), value :: params
-      character(kind=c_char), intent(in) :: key(*)
-      real(c_double), value :: value
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_params_set_int(params, key, value, errmsg, errmsg_len) &
-        bind(C, name='b2b_params_set_int') result(st)
-      import :: c_int, c_ptr, c_char
-      type(c_ptr), value :: params
-      character(kind=c_char), intent(in) :: key(*)
-      integer(c_int), value :: value
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_params_finalize(params, errmsg, errmsg_len) &
-        bind(C, name='b2b_params_finalize') result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), value :: params
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_params_history_size(params, n, errmsg, errmsg_len) &
-        bind(C, name='b2b_params_history_size') result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), value :: params
-      integer(c_int), intent(inout) :: n
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_pair_eval(params, segments, X, end_tangents, radii, hist_old, hist_new, &
-                         hist_len, contact_status, info, residual, tangent, ldk, errmsg, &
-                         errmsg_len) bind(C, name='b2b_pair_eval') result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), value :: params, segments, X, end_tangents, radii, hist_old, hist_new
-      integer(c_int), value :: hist_len
-      type(c_ptr), value :: contact_status, info, residual, tangent
-      integer(c_int), value :: ldk
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-  end interface
 
   real(c_double), parameter :: sentinel_f = -7.0_c_double, sentinel_c = -9.0_c_double
   real(c_double), parameter :: penalty = 1.0e3_c_double, g0 = 0.02_c_double

@@ -30,73 +30,8 @@ program ftest_pair_friction
                                          c_null_char, c_associated
   use b2b
   use ftest_check
+  use ftest_capi
   implicit none
-
-  interface
-    function c_params_create(params, errmsg, errmsg_len) bind(C, name='b2b_params_create') &
-        result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), intent(inout) :: params
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_params_destroy(params) bind(C, name='b2b_params_destroy') result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), intent(inout) :: params
-      integer(c_int) :: st
-    end function
-
-    function c_params_set_real(params, key, value, errmsg, errmsg_len) &
-        bind(C, name='b2b_params_set_real') result(st)
-      import :: c_int, c_double, c_ptr, c_char
-      type(c_ptr), value :: params
-      character(kind=c_char), intent(in) :: key(*)
-      real(c_double), value :: value
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_params_finalize(params, errmsg, errmsg_len) &
-        bind(C, name='b2b_params_finalize') result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), value :: params
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_pair_eval(params, segments, X, end_tangents, radii, hist_old, hist_new, &
-                         hist_len, contact_status, info, residual, tangent, ldk, errmsg, &
-                         errmsg_len) bind(C, name='b2b_pair_eval') result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), value :: params, segments, X, end_tangents, radii, hist_old, hist_new
-      integer(c_int), value :: hist_len
-      type(c_ptr), value :: contact_status, info, residual, tangent
-      integer(c_int), value :: ldk
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-
-    function c_handover(params, beam, direction, from_segment, from_X, from_end_tangents, &
-                        to_segment, to_X, to_end_tangents, hist_from, hist_to, hist_len, &
-                        errmsg, errmsg_len) bind(C, name='b2b_pair_history_handover') &
-        result(st)
-      import :: c_int, c_ptr
-      type(c_ptr), value :: params
-      integer(c_int), value :: beam, direction
-      type(c_ptr), value :: from_segment, from_X, from_end_tangents
-      type(c_ptr), value :: to_segment, to_X, to_end_tangents
-      type(c_ptr), value :: hist_from, hist_to
-      integer(c_int), value :: hist_len
-      type(c_ptr), value :: errmsg
-      integer(c_int), value :: errmsg_len
-      integer(c_int) :: st
-    end function
-  end interface
 
   real(c_double), parameter :: sentinel = -7.0_c_double, sentinel_c = -9.0_c_double
   integer, parameter :: isentinel = -77
@@ -284,13 +219,15 @@ contains
 
   ! ------------------------------------------------------------ stick, slip
 
-  !> Module b2b_pair_eval of the pair (A's segment s, B), tangent present.
-  subroutine eval_f(s, shift, hist_old, hist_new, status, info, res, Kt, label)
+  !> Module b2b_pair_eval of the pair (A's segment s, B), tangent present;
+  !> with vs_c = .true. also compare_c of the same evaluation.
+  subroutine eval_f(s, shift, hist_old, hist_new, status, info, res, Kt, label, vs_c)
     integer, intent(in) :: s
     real(c_double), intent(in) :: shift(3), hist_old(:)
     real(c_double), intent(inout) :: hist_new(:), info(32), res(24), Kt(24, 24)
     integer, intent(inout) :: status
     character(len=*), intent(in) :: label
+    logical, intent(in), optional :: vs_c
     integer :: segs(3, 2), ierr
     real(c_double) :: X(3, 8)
     character(len=B2B_ERRMSG_LEN) :: msg
@@ -303,6 +240,9 @@ contains
     call b2b_pair_eval(p, segs, X, radii0, hist_old, hist_new, status, info, res, Kt, &
                        ierr=ierr, errmsg=msg)
     call check(ierr == B2B_OK .and. msg == '', label // ': eval succeeds [' // trim(msg) // ']')
+    if (present(vs_c)) then
+      if (vs_c) call compare_c(s, shift, hist_old, hist_new, status, info, res, Kt, label)
+    end if
   end subroutine
 
   !> The same through the C function; all outputs must equal the module's.
@@ -340,6 +280,16 @@ contains
     call check(same_bits(hist_new, hnew_c), label // ': hist_new module == C bit for bit')
   end subroutine
 
+  !> The friction part of info: f_N, the tangential force T and the slip
+  !> increment.
+  subroutine friction_info(info, fn, T, slip)
+    real(c_double), intent(in) :: info(32)
+    real(c_double), intent(out) :: fn, T(3), slip(3)
+    fn = info(B2B_INFO_NORMAL_FORCE + 1)
+    T = info(B2B_INFO_TANGENTIAL_FORCE + 1:B2B_INFO_TANGENTIAL_FORCE + 3)
+    slip = info(B2B_INFO_SLIP + 1:B2B_INFO_SLIP + 3)
+  end subroutine
+
   subroutine test_stick_slip()
     real(c_double), parameter :: small = 0.01_c_double, large = 0.2_c_double
     real(c_double) :: hist0(12), hist1(12), hist2(12), info(32), res(24), Kt(24, 24)
@@ -349,9 +299,7 @@ contains
     ! Press: fresh history, active, stick with no force yet.
     hist0 = 0
     call eval_f(3, [0.0_c_double, 0.0_c_double, 0.0_c_double], hist0, hist1, status, info, &
-                res, Kt, 'press')
-    call compare_c(3, [0.0_c_double, 0.0_c_double, 0.0_c_double], hist0, hist1, status, info, &
-                   res, Kt, 'press')
+                res, Kt, 'press', vs_c=.true.)
     call check(status == B2B_CONTACT_ACTIVE, 'press: active')
     call check(abs(info(B2B_INFO_GAP + 1) + 0.05_c_double) <= 1.0e-12_c_double, &
                'press: gap == -0.05')
@@ -364,12 +312,8 @@ contains
 
     ! ---- small sideways move: stick, |T| = eps_T delta
     call eval_f(3, [0.0_c_double, small, 0.0_c_double], hist1, hist2, status, info, res, Kt, &
-                'stick')
-    call compare_c(3, [0.0_c_double, small, 0.0_c_double], hist1, hist2, status, info, res, &
-                   Kt, 'stick')
-    fn = info(B2B_INFO_NORMAL_FORCE + 1)
-    T = info(B2B_INFO_TANGENTIAL_FORCE + 1:B2B_INFO_TANGENTIAL_FORCE + 3)
-    slip = info(B2B_INFO_SLIP + 1:B2B_INFO_SLIP + 3)
+                'stick', vs_c=.true.)
+    call friction_info(info, fn, T, slip)
     tnorm = norm2(T)
     call check(status == B2B_CONTACT_ACTIVE, 'stick: active')
     call check(abs(fn - eps_n * 0.05_c_double) <= 1.0e-12_c_double * fn, 'stick: f_N == 5')
@@ -395,12 +339,8 @@ contains
 
     ! ---- large sideways move: slip, |T| = mu f_N
     call eval_f(3, [0.0_c_double, large, 0.0_c_double], hist1, hist2, status, info, res, Kt, &
-                'slip')
-    call compare_c(3, [0.0_c_double, large, 0.0_c_double], hist1, hist2, status, info, res, &
-                   Kt, 'slip')
-    fn = info(B2B_INFO_NORMAL_FORCE + 1)
-    T = info(B2B_INFO_TANGENTIAL_FORCE + 1:B2B_INFO_TANGENTIAL_FORCE + 3)
-    slip = info(B2B_INFO_SLIP + 1:B2B_INFO_SLIP + 3)
+                'slip', vs_c=.true.)
+    call friction_info(info, fn, T, slip)
     tnorm = norm2(T)
     excess = (eps_t * large - mu * fn) / eps_t
     call check(status == B2B_CONTACT_ACTIVE, 'slip: active')
@@ -462,9 +402,9 @@ contains
       ptt = c_loc(tt)
     end if
     buf = c_null_char
-    st = c_handover(cp, int(cbeam, c_int), int(direction, c_int), c_loc(fs), c_loc(fx), pft, &
-                    c_loc(ts), c_loc(tx), ptt, c_loc(hf), c_loc(ht), 12_c_int, c_loc(buf), &
-                    int(size(buf), c_int))
+    st = c_pair_history_handover(cp, int(cbeam, c_int), int(direction, c_int), c_loc(fs), &
+                                 c_loc(fx), pft, c_loc(ts), c_loc(tx), ptt, c_loc(hf), &
+                                 c_loc(ht), 12_c_int, c_loc(buf), int(size(buf), c_int))
     hist_to = ht
   end function
 
@@ -537,7 +477,7 @@ contains
   subroutine test_handover_physics()
     real(c_double), parameter :: shift(3) = [-0.2_c_double, 0.0_c_double, 0.0_c_double]
     real(c_double) :: hist0(12), hist1(12), hist2(12), hto(12), info(32), res(24), Kt(24, 24)
-    real(c_double) :: XA(3, n_a), P3(3, 4), P4(3, 4), T(3), fn, gt
+    real(c_double) :: XA(3, n_a), P3(3, 4), P4(3, 4), T(3), slip(3), fn, gt
     integer :: s3(3), s4(3), status, ierr
     character(len=B2B_ERRMSG_LEN) :: msg
 
@@ -559,10 +499,9 @@ contains
     hto = sentinel
     call b2b_pair_history_handover(p, 1, +1, s3, P3, s4, P4, hist1, hto, ierr=ierr, errmsg=msg)
     call check(ierr == B2B_OK, 'crossing: handover succeeds [' // trim(msg) // ']')
-    call eval_f(4, shift, hto, hist2, status, info, res, Kt, 'crossing: pair (4, B)')
-    call compare_c(4, shift, hto, hist2, status, info, res, Kt, 'crossing: pair (4, B)')
-    fn = info(B2B_INFO_NORMAL_FORCE + 1)
-    T = info(B2B_INFO_TANGENTIAL_FORCE + 1:B2B_INFO_TANGENTIAL_FORCE + 3)
+    call eval_f(4, shift, hto, hist2, status, info, res, Kt, 'crossing: pair (4, B)', &
+                vs_c=.true.)
+    call friction_info(info, fn, T, slip)
     call check(status == B2B_CONTACT_ACTIVE, 'crossing: pair (4, B) active')
     call check(info(B2B_INFO_FRICTION_STATE + 1) == B2B_FRICTION_SLIP, &
                'crossing: handed-over history slips')
@@ -571,7 +510,7 @@ contains
     call check(info(B2B_INFO_DISSIPATION + 1) > 0, 'crossing: dissipation > 0')
     ! The tangential displacement since the commit, |slip| + mu f_N / eps_T,
     ! is A's move, 0.2, up to the first-order map of the anchor.
-    gt = norm2(info(B2B_INFO_SLIP + 1:B2B_INFO_SLIP + 3)) + mu * fn / eps_t
+    gt = norm2(slip) + mu * fn / eps_t
     call check(abs(gt - 0.2_c_double) <= 1.0e-3_c_double, 'crossing: |g_T| = ' // &
                real_str(gt) // ' ~ 0.2')
 
