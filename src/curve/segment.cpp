@@ -226,12 +226,92 @@ void Segment::jacobians(double xi, double* P, double* Pd) const {
   }
 }
 
+namespace {
+
+// Block (A, B) of the symmetric 9x9 Z of the node differences z_1..z_3, of
+// which only the upper triangle is stored (leading dimension 9), entry
+// (alpha, beta); zero outside z_1..z_3 and for (1, 3): no term couples z_1
+// and z_3.
+template <int A, int B>
+inline double zs(const double* Z, int alpha, int beta) {
+  if constexpr (A < 1 || B < 1 || A > 3 || B > 3 || A - B > 1 || B - A > 1) {
+    (void)Z;
+    (void)alpha;
+    (void)beta;
+    return 0.0;
+  } else if constexpr (A < B) {
+    return Z[3 * (A - 1) + alpha + 9 * (3 * (B - 1) + beta)];
+  } else if constexpr (A > B) {
+    return Z[3 * (B - 1) + beta + 9 * (3 * (A - 1) + alpha)];
+  } else {
+    return alpha <= beta ? Z[3 * (A - 1) + alpha + 9 * (3 * (A - 1) + beta)]
+                         : Z[3 * (A - 1) + beta + 9 * (3 * (A - 1) + alpha)];
+  }
+}
+
+// Block (I, J), I <= J, of D^T Z D (slot k moves z_k by +1 and z_k+1 by -1):
+//   Z_IJ - Z_I+1,J - Z_I,J+1 + Z_I+1,J+1,
+// added to H at (I, J) and, unless kUpper, its transpose at (J, I); a
+// diagonal block on its upper triangle (and, unless kUpper, mirrored).
+template <int I, int J, bool kUpper>
+inline void add_dzd_block(const double* Z, double* H, int ld) {
+  double* hij = H + 3 * I + ld * 3 * J;
+  double* hji = H + 3 * J + ld * 3 * I;
+  for (int b = 0; b < 3; ++b)
+    for (int a = 0; a < (I == J ? b + 1 : 3); ++a) {
+      const double v = (zs<I, J>(Z, a, b) - zs<I + 1, J>(Z, a, b)) -
+                       (zs<I, J + 1>(Z, a, b) - zs<I + 1, J + 1>(Z, a, b));
+      hij[a + ld * b] += v;
+      if (!kUpper && (I != J || a != b)) hji[b + ld * a] += v;
+    }
+}
+
+template <bool kUpper>
+void add_dzd(const double* Z, double* H, int ld) {
+  // H_03 = Z_13 = 0
+  add_dzd_block<0, 0, kUpper>(Z, H, ld);
+  add_dzd_block<0, 1, kUpper>(Z, H, ld);
+  add_dzd_block<0, 2, kUpper>(Z, H, ld);
+  add_dzd_block<1, 1, kUpper>(Z, H, ld);
+  add_dzd_block<1, 2, kUpper>(Z, H, ld);
+  add_dzd_block<1, 3, kUpper>(Z, H, ld);
+  add_dzd_block<2, 2, kUpper>(Z, H, ld);
+  add_dzd_block<2, 3, kUpper>(Z, H, ld);
+  add_dzd_block<3, 3, kUpper>(Z, H, ld);
+}
+
+}  // namespace
+
+void Segment::add_tangent_hessians(double c1, double c3, const double* w, double* H, int ld,
+                                   bool upper) const {
+  // Both end tangents are functions of the node differences z_j = x_j -
+  // x_{j-1} (j = 1..3). Their contractions are summed in z, the upper
+  // triangle of a 9x9 matrix Z, and taken to X once (D^T Z D, add_dzd).
+  double Z[81];
+  std::memset(Z, 0, sizeof Z);
+  const double coef[2] = {c1, c3};
+  for (int t = 0; t < 2; ++t) {
+    const Term& term = term_[1 + 2 * t];
+    if (term.nonlinear) term.tangent.add_contracted_hessian_z(w, coef[t], Z, 9);
+  }
+  if (upper)
+    add_dzd<true>(Z, H, ld);
+  else
+    add_dzd<false>(Z, H, ld);
+}
+
 void Segment::add_contracted_hessian(double xi, const double* w, double s, double* H,
                                      int ld) const {
   if (linear_in_X()) return;
   const HermiteBasis hb(xi);
-  for (int k = 1; k < 4; k += 2)
-    if (term_[k].nonlinear) term_[k].tangent.add_contracted_hessian(w, s * hb.h[k], H, ld);
+  add_tangent_hessians(s * hb.h[1], s * hb.h[3], w, H, ld, false);
+}
+
+void Segment::add_contracted_hessian_upper(double xi, const double* w, double s, double* H,
+                                           int ld) const {
+  if (linear_in_X()) return;
+  const HermiteBasis hb(xi);
+  add_tangent_hessians(s * hb.h[1], s * hb.h[3], w, H, ld, true);
 }
 
 void Segment::contracted_hessians(double xi, const double* w, double* Hx, double* Hxd) const {
@@ -239,14 +319,11 @@ void Segment::contracted_hessians(double xi, const double* w, double* Hx, double
   if (Hxd) std::memset(Hxd, 0, 144 * sizeof(double));
   if (linear_in_X()) return;
   const HermiteBasis hb(xi);
-  for (int k = 1; k < 4; k += 2) {
-    if (!term_[k].nonlinear) continue;
-    term_[k].tangent.add_contracted_hessian(w, hb.h[k], Hx, 12);
-    if (Hxd) term_[k].tangent.add_contracted_hessian(w, hb.dh[k], Hxd, 12);
-  }
-  // Every term is symmetric, but its blocks are summed in different orders
-  // for (a,b) and (b,a): average the triangles so that hosts (and the
-  // documentation) can rely on exact symmetry.
+  add_tangent_hessians(hb.h[1], hb.h[3], w, Hx, 12, false);
+  if (Hxd) add_tangent_hessians(hb.dh[1], hb.dh[3], w, Hxd, 12, false);
+  // Every term is symmetric, but D^T Z D sums (i,j) and (j,i) in different
+  // orders: average the triangles so that hosts (and the documentation) can
+  // rely on exact symmetry.
   for (double* H : {Hx, Hxd}) {
     if (!H) continue;
     for (int j = 0; j < 12; ++j)

@@ -47,6 +47,10 @@ class Segment {
   // H += s * (w . d2x/dX2): a 12x12 block with leading dimension ld,
   // symmetric up to rounding (the contact element mirrors its tangent).
   void add_contracted_hessian(double xi, const double* w, double s, double* H, int ld) const;
+  // The same on the upper triangle of H only (row <= column); the entries
+  // below the diagonal are not touched. For a caller that mirrors H.
+  void add_contracted_hessian_upper(double xi, const double* w, double s, double* H,
+                                    int ld) const;
   // The end points x(-1) and x(1) (available after build, at no cost).
   const double* start_point() const { return term_[0].value; }
   const double* end_point() const { return term_[2].value; }
@@ -65,6 +69,10 @@ class Segment {
   bool linear_kind_ = false;
 
   void set_linear(int k, double c0, double c1, double c2, double c3, const double* X);
+  // H += w . (c1 d2T0/dX2 + c3 d2T1/dX2) (the nonlinear end tangents), on
+  // the whole 12x12 block or (upper) its upper triangle.
+  void add_tangent_hessians(double c1, double c3, const double* w, double* H, int ld,
+                            bool upper) const;
 };
 
 }  // namespace curve

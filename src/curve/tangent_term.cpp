@@ -8,81 +8,6 @@
 
 namespace b2b {
 namespace curve {
-namespace {
-
-// The helpers below copy their small operands into locals first: H could
-// alias them as far as the compiler knows, which would force a reload after
-// every store and keep the loops from being unrolled and vectorised.
-
-// H[3*sa + i, 3*sb + j] += B_ij (B column-major 3x3; H leading dimension ld)
-inline void add_block(double* H, int ld, int sa, int sb, const double* B) {
-  double b[9];
-  for (int k = 0; k < 9; ++k) b[k] = B[k];
-  double* h = H + 3 * sa + 3 * ld * sb;
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) h[i + ld * j] += b[i + 3 * j];
-}
-
-// s * [B -B; -B B] on the slot pair (u, v): the second derivative of a
-// function of x_v - x_u whose own second derivative is s * B.
-inline void add_difference_blocks(double* H, int ld, int u, int v, const double* B, double s) {
-  double sb[9], msb[9];
-  for (int k = 0; k < 9; ++k) {
-    sb[k] = s * B[k];
-    msb[k] = -sb[k];
-  }
-  add_block(H, ld, u, u, sb);
-  add_block(H, ld, v, v, sb);
-  add_block(H, ld, u, v, msb);
-  add_block(H, ld, v, u, msb);
-}
-
-// H[3*sa + i, 3*sb + j] += s * delta_ij
-inline void add_identity_block(double* H, int ld, int sa, int sb, double s) {
-  for (int i = 0; i < 3; ++i) H[(3 * sa + i) + ld * (3 * sb + i)] += s;
-}
-
-// Block (sa, sb) += s f g^T and block (sb, sa) += s g f^T (a symmetric pair;
-// for sa == sb the block receives both).
-inline void add_sym_outer(double* H, int ld, int sa, const double* f, int sb, const double* g,
-                          double s) {
-  const double sf[3] = {s * f[0], s * f[1], s * f[2]};
-  const double gg[3] = {g[0], g[1], g[2]};
-  double* hab = H + 3 * sa + 3 * ld * sb;
-  double* hba = H + 3 * sb + 3 * ld * sa;
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) {
-      hab[i + ld * j] += sf[i] * gg[j];
-      hba[i + ld * j] += gg[i] * sf[j];
-    }
-}
-
-// Projector I - e e^T (column-major; symmetric)
-inline void projector(const double* e, double* Q) {
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) Q[i + 3 * j] = (i == j ? 1.0 : 0.0) - e[i] * e[j];
-}
-
-// out = A^T v (A column-major 3x3)
-inline void mat_t_vec(const double* A, const double* v, double* out) {
-  for (int j = 0; j < 3; ++j) out[j] = dot3(A + 3 * j, v);
-}
-
-// out = s A^T MB (all 3x3 column-major), MB = M B computed by the caller once
-// per B
-inline void atmb(const double* A, const double* MB, double s, double* out) {
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) out[i + 3 * j] = s * dot3(A + 3 * i, MB + 3 * j);
-}
-
-// out = M B (3x3 column-major)
-inline void matmul3(const double* M, const double* B, double* out) {
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i)
-      out[i + 3 * j] = M[i] * B[3 * j] + M[i + 3] * B[1 + 3 * j] + M[i + 6] * B[2 + 3 * j];
-}
-
-}  // namespace
 
 bool TangentTerm::evaluate(const double* X) {
   double d[3];
@@ -177,83 +102,112 @@ void TangentTerm::jacobian() {
     }
 }
 
-void TangentTerm::add_contracted_hessian(const double* w, double s, double* H, int ld) const {
-  // w . d2T = sigma [ (w.uhat) d2L + dL (x) g + g (x) dL + L w.d2uhat ]
+void TangentTerm::add_contracted_hessian_z(const double* w, double s, double* Z, int ldz) const {
+  // T = sigma L(d) uhat(u~), d = z_q, u~ = k0 u a function of (z_b, z_c):
+  //   w . d2T = sigma [ (w.uhat) d2L + dL (x) g + g (x) dL + L w.d2uhat ],
+  // g = duhat^T w. All of it lives on the blocks of z_b and z_c (q is one of
+  // them), a symmetric 6x6 matrix with blocks (b, b), (b, c), (c, c):
+  //   F^T M F + [the dL and d2L terms on q's row and column] (+ cw . d2u~),
+  // F = [Fb, Fc] = du~/d(z_b, z_c), M = w . d2uhat/du~2 times sigma L, and
+  // with e = eL, G_x = sigma Fx^T cw the dL terms are e G_x^T on (q, x) and
+  // G_x e^T on (x, q), and sigma (w.uhat) d2L = cL (I - e e^T) on (q, q).
   const double wu = dot3(w, uhat_);
-
-  // d2L = [QL -QL; -QL QL] / L on the slots (p, q).
-  double QL[9], B[9];
-  projector(eL_, QL);
-  add_difference_blocks(H, ld, p, q, QL, s * sigma * wu / L_);
-  if (dir == Dir::Constant) return;
-
-  // cw = (I - uhat uhat^T) w / r, so that g = duhat^T w = du^T cw:
-  // g on slot s is du_s^T cw; dL is -eL on p, +eL on q.
-  const double inv_r = 1.0 / r_;
-  double cw[3];
-  for (int i = 0; i < 3; ++i) cw[i] = (w[i] - uhat_[i] * wu) * inv_r;
-  double mL[3] = {-eL_[0], -eL_[1], -eL_[2]};
-  for (int k = 0; k < n_slots_; ++k) {
-    double g[3];
-    mat_t_vec(du_[k], cw, g);
-    add_sym_outer(H, ld, q, eL_, slot_[k], g, s * sigma);
-    add_sym_outer(H, ld, p, mL, slot_[k], g, s * sigma);
+  const double t0 = s * sigma;
+  const double cL = t0 * wu / L_;  // d2L = (I - eL eL^T) / L on (q, q)
+  const double e[3] = {eL_[0], eL_[1], eL_[2]};
+  double Q[9];  // cL (I - e e^T)
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) Q[i + 3 * j] = cL * ((i == j ? 1.0 : 0.0) - e[i] * e[j]);
+  auto add_upper = [ldz](double* z, const double* A) {  // upper triangle of a diagonal block
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i <= j; ++i) z[i + ldz * j] += A[i + 3 * j];
+  };
+  if (dir == Dir::Constant) {
+    add_upper(Z + 3 * (q - 1) + ldz * 3 * (q - 1), Q);
+    return;
   }
+  const double inv_r = 1.0 / r_;
+  const double uh[3] = {uhat_[0], uhat_[1], uhat_[2]};
+  double cw[3];  // (I - uhat uhat^T) w / r: duhat^T w = du~^T cw
+  for (int i = 0; i < 3; ++i) cw[i] = (w[i] - uh[i] * wu) * inv_r;
 
-  // w . d2uhat = du^T M du + cw . d2u~, with
-  // M = -[(uhat.w) Q + uhat (Qw)^T + (Qw) uhat^T] / r^2 = -[wu Q / r + uhat cw^T + cw uhat^T] / r
-  double M[9], Qu[9];
-  projector(uhat_, Qu);
+  // M = -[wu (I - uhat uhat^T) / r + uhat cw^T + cw uhat^T] / r, times t0 L
+  const double tL = t0 * L_;
+  const double mI = -tL * wu * inv_r * inv_r, mu = tL * wu * inv_r * inv_r, mc = -tL * inv_r;
+  double M[9];
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
-      M[i + 3 * j] = -(wu * inv_r * Qu[i + 3 * j] + uhat_[i] * cw[j] + cw[i] * uhat_[j]) * inv_r;
-  const double sLL = s * sigma * L_;
-  if (dir == Dir::Chord) {  // u = x_c - x_a: du^T M du = [M -M; -M M] on (a, c)
-    add_difference_blocks(H, ld, a, c, M, sLL);
-    return;  // the chord is linear in X: d2u = 0
-  }
-  // du_k^T M du_l = (du_l^T M du_k)^T (M is symmetric): compute k <= l only.
-  for (int l = 0; l < n_slots_; ++l) {
-    double MD[9];
-    matmul3(M, du_[l], MD);
-    for (int k = 0; k <= l; ++k) {
-      atmb(du_[k], MD, sLL, B);
-      add_block(H, ld, slot_[k], slot_[l], B);
-      if (k == l) continue;
-      double Bt[9];
-      for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) Bt[i + 3 * j] = B[j + 3 * i];
-      add_block(H, ld, slot_[l], slot_[k], Bt);
-    }
-  }
+      M[i + 3 * j] =
+          (i == j ? mI : 0.0) + mu * uh[i] * uh[j] + mc * (uh[i] * cw[j] + cw[i] * uh[j]);
 
-  // cw . d2u, u = s1 w1 + s2 w2 (times k0):
-  //   (cw.w1) d2s1 + sym((dw1^T cw) (x) ds1) + (cw.w2) d2s2 + sym((dw2^T cw) (x) ds2)
-  // d2s1 = 2 on (b,b), (c,c), -2 on (b,c), (c,b); d2s2 likewise on a, b.
-  // dw1^T cw = -cw on a, +cw on b; ds1 = -2 w2 on b, +2 w2 on c;
-  // dw2^T cw = -cw on b, +cw on c; ds2 = -2 w1 on a, +2 w1 on b.
-  const double t = sLL * k0_;
-  const double cw1 = dot3(cw, w1_), cw2 = dot3(cw, w2_);
-  add_identity_block(H, ld, b, b, 2.0 * t * (cw1 + cw2));
-  add_identity_block(H, ld, c, c, 2.0 * t * cw1);
-  add_identity_block(H, ld, b, c, -2.0 * t * cw1);
-  add_identity_block(H, ld, c, b, -2.0 * t * cw1);
-  add_identity_block(H, ld, a, a, 2.0 * t * cw2);
-  add_identity_block(H, ld, a, b, -2.0 * t * cw2);
-  add_identity_block(H, ld, b, a, -2.0 * t * cw2);
-  double m_cw[3] = {-cw[0], -cw[1], -cw[2]};
-  double w1x2[3] = {2.0 * w1_[0], 2.0 * w1_[1], 2.0 * w1_[2]};
-  double w2x2[3] = {2.0 * w2_[0], 2.0 * w2_[1], 2.0 * w2_[2]};
-  double m_w1x2[3] = {-w1x2[0], -w1x2[1], -w1x2[2]};
-  double m_w2x2[3] = {-w2x2[0], -w2x2[1], -w2x2[2]};
-  add_sym_outer(H, ld, a, m_cw, b, m_w2x2, t);  // f1 (x) ds1
-  add_sym_outer(H, ld, a, m_cw, c, w2x2, t);
-  add_sym_outer(H, ld, b, cw, b, m_w2x2, t);
-  add_sym_outer(H, ld, b, cw, c, w2x2, t);
-  add_sym_outer(H, ld, b, m_cw, a, m_w1x2, t);  // f2 (x) ds2
-  add_sym_outer(H, ld, b, m_cw, b, w1x2, t);
-  add_sym_outer(H, ld, c, cw, a, m_w1x2, t);
-  add_sym_outer(H, ld, c, cw, b, w1x2, t);
+  // Blocks Fb^T M Fb, Fb^T M Fc, Fc^T M Fc and G_b, G_c
+  double Bbb[9], Bbc[9], Bcc[9], Gb[3], Gc[3];
+  if (dir == Dir::Chord) {  // u = z_b + z_c: Fb = Fc = I
+    for (int k = 0; k < 9; ++k) Bbb[k] = Bbc[k] = Bcc[k] = M[k];
+    for (int i = 0; i < 3; ++i) Gb[i] = Gc[i] = t0 * cw[i];
+  } else {
+    // Fb = fa I + 2 y2 y1^T, Fc = fb I + 2 y1 y2^T with fa = k0 s1, fb = k0 s2,
+    // y = sqrt(k0) w (u = s1 w1 + s2 w2, s1 = |w2|^2, s2 = |w1|^2, w1 = z_b,
+    // w2 = z_c; the factors keep every product in range, as u~ = k0 u is
+    // O(1)), so with n1 = M y1, n2 = M y2:
+    //   Fb^T M Fb = fa^2 M + 2 fa (y1 n2^T + n2 y1^T) + 4 (y2.n2) y1 y1^T,
+    //   Fc^T M Fc = fb^2 M + 2 fb (y2 n1^T + n1 y2^T) + 4 (y1.n1) y2 y2^T,
+    //   Fb^T M Fc = fa fb M + 2 fa n1 y2^T + 2 fb y1 n2^T + 4 (y2.n1) y1 y2^T,
+    // and cw . d2u~ = k0 [2 (cw.w2) I, 2 (cw w2^T + w1 cw^T); . , 2 (cw.w1) I]
+    // (times sigma L): a multiple of M plus symmetric rank-two terms per block.
+    const double rk = std::sqrt(k0_);
+    const double fa = k0_ * s1_, fb = k0_ * s2_;
+    double y1[3], y2[3], n1[3], n2[3];
+    for (int i = 0; i < 3; ++i) {
+      y1[i] = rk * w1_[i];
+      y2[i] = rk * w2_[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+      n1[i] = M[i] * y1[0] + M[i + 3] * y1[1] + M[i + 6] * y1[2];
+      n2[i] = M[i] * y2[0] + M[i + 3] * y2[1] + M[i + 6] * y2[2];
+    }
+    const double mu11 = dot3(y1, n1), mu22 = dot3(y2, n2), mu12 = dot3(y2, n1);
+    const double cy1 = dot3(cw, y1), cy2 = dot3(cw, y2);
+    const double tau = 2.0 * tL * rk;  // the factor of cw . d2u~ in y
+    const double dbb = tau * cy2, dcc = tau * cy1;
+    double pb[3], pc[3], u[3], v[3];
+    for (int i = 0; i < 3; ++i) {
+      pb[i] = 2.0 * (fa * n2[i] + mu22 * y1[i]);
+      pc[i] = 2.0 * (fb * n1[i] + mu11 * y2[i]);
+      u[i] = 2.0 * fa * n1[i] + tau * cw[i];
+      v[i] = 2.0 * (fb * n2[i] + 2.0 * mu12 * y2[i]) + tau * cw[i];
+      Gb[i] = t0 * (fa * cw[i] + 2.0 * cy2 * y1[i]);  // sigma Fb^T cw
+      Gc[i] = t0 * (fb * cw[i] + 2.0 * cy1 * y2[i]);
+    }
+    const double abb = fa * fa, acc = fb * fb, abc = fa * fb;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const double m = M[i + 3 * j], id = i == j ? 1.0 : 0.0;
+        Bbb[i + 3 * j] = abb * m + (y1[i] * pb[j] + pb[i] * y1[j]) + dbb * id;
+        Bcc[i + 3 * j] = acc * m + (y2[i] * pc[j] + pc[i] * y2[j]) + dcc * id;
+        Bbc[i + 3 * j] = abc * m + (u[i] * y2[j] + y1[i] * v[j]);
+      }
+  }
+  // The dL and d2L terms on q's row and column.
+  if (q == b) {
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        Bbb[i + 3 * j] += (e[i] * Gb[j] + Gb[i] * e[j]) + Q[i + 3 * j];
+        Bbc[i + 3 * j] += e[i] * Gc[j];
+      }
+  } else {
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        Bcc[i + 3 * j] += (e[i] * Gc[j] + Gc[i] * e[j]) + Q[i + 3 * j];
+        Bbc[i + 3 * j] += Gb[i] * e[j];
+      }
+  }
+  double* zbb = Z + 3 * (b - 1) + ldz * 3 * (b - 1);
+  add_upper(zbb, Bbb);
+  add_upper(zbb + 3 + 3 * ldz, Bcc);
+  double* zbc = zbb + 3 * ldz;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) zbc[i + ldz * j] += Bbc[i + 3 * j];
 }
 
 }  // namespace curve

@@ -9,8 +9,8 @@
 //             (derivative of the chord-length parabola through a, b, c)
 //   Constant  u = a host-given direction (only L varies with X).
 // Value, 3x12 Jacobian and, for any vector w, the 12x12 contraction
-// w . d2T/dX2 are computed in closed form (contact-notes.md 2.2), as 3x3
-// blocks on the few patch slots the term involves.
+// w . d2T/dX2 are computed in closed form (contact-notes.md 2.2); the
+// latter in the node differences z, where it is a 6x6 matrix (see below).
 #pragma once
 
 namespace b2b {
@@ -34,10 +34,14 @@ struct TangentTerm {
   bool evaluate(const double* X);
   // Fills jac. Call after evaluate().
   void jacobian();
-  // H += s * (w . d2T/dX2), H a 12x12 column-major block with leading
-  // dimension ld. Symmetric up to rounding (blocks are summed in different
-  // orders for (a,b) and (b,a)). Call after jacobian().
-  void add_contracted_hessian(const double* w, double s, double* H, int ld) const;
+  // The contraction w . d2T in the node differences z_j = x_j - x_{j-1}
+  // (j = 1..3; T depends on X only through them):
+  //   Z += s * (w . d2T/dz2) on the upper triangle (row <= column),
+  // Z column-major with leading dimension ldz, the block of z_j at rows and
+  // columns 3(j-1). Requires consecutive slots, as Segment sets them:
+  // q = p + 1, and for Chord and Weighted b = a + 1, c = b + 1, q in {b, c}.
+  // In X it is D^T Z D, D = dz/dX (Segment does that). Call after jacobian().
+  void add_contracted_hessian_z(const double* w, double s, double* Z, int ldz) const;
 
  private:
   double L_ = 0, eL_[3] = {0, 0, 0};   // element length and unit chord

@@ -275,9 +275,17 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   // will be its copy).
   bool finite = true;
   for (int c = 0; c < m && finite; ++c) finite = all_finite(Kc + kNdof * c, symmetric ? c + 1 : m);
-  if (Kc != K)
-    for (int c = 0; c < m; ++c)
-      for (int r = 0; r < m; ++r) K[cols[r] + kNdof * cols[c]] = Kc[r + kNdof * c];
+  if (Kc != K)  // the used columns come in whole slots: three rows at a time
+    for (int c = 0; c < m; ++c) {
+      double* dst = K + kNdof * cols[c];
+      const double* src = Kc + kNdof * c;
+      for (int r = 0; r < m; r += 3) {
+        double* d3 = dst + cols[r];
+        d3[0] = src[r];
+        d3[1] = src[r + 1];
+        d3[2] = src[r + 2];
+      }
+    }
   // Curvature of the smoothed curves in X: only the node-preserving kinds
   // (and host end tangents) are nonlinear in X; the linear kind pays nothing.
   if (curved) {
@@ -289,6 +297,9 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
       }
       sa.add_contracted_hessian(xi, wa, 1.0, K, kNdof);
       sb.add_contracted_hessian(eta, wb, 1.0, K + 12 + 12 * kNdof, kNdof);
+    } else if (symmetric) {  // the upper triangle; mirrored below
+      sa.add_contracted_hessian_upper(xi, n, -f, K, kNdof);
+      sb.add_contracted_hessian_upper(eta, n, f, K + 12 + 12 * kNdof, kNdof);
     } else {
       sa.add_contracted_hessian(xi, n, -f, K, kNdof);
       sb.add_contracted_hessian(eta, n, f, K + 12 + 12 * kNdof, kNdof);

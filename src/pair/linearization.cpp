@@ -6,46 +6,83 @@ namespace b2b {
 namespace pair {
 namespace {
 
-// Column c of a 3 x 12 column-major matrix dotted with v.
-inline double col_dot(const double* M, int c, const double* v) { return curve::dot3(M + 3 * c, v); }
+// The used columns of one beam: P, Pd its 3x12 jacobians, sign +1 for A
+// (J = [P_A, -P_B]), k the first row of lin to fill. Returns the next;
+// clears axial unless every column of P lies along its own axis.
+template <bool kOnA>
+int linearize_beam(unsigned used, const ContactGeometry& geo, double inv_det, Linearization& lin,
+                   int k, bool& axial) {
+  const double* P = kOnA ? geo.PA : geo.PB;
+  const double* Pd = kOnA ? geo.PAd : geo.PBd;
+  const double sign = kOnA ? 1.0 : -1.0;
+  // Local copies: lin could alias the geometry as far as the compiler knows.
+  const double n[3] = {geo.n[0], geo.n[1], geo.n[2]};
+  const double ta[3] = {geo.ta[0], geo.ta[1], geo.ta[2]};
+  const double tb[3] = {geo.tb[0], geo.tb[1], geo.tb[2]};
+  const double d[3] = {geo.d[0], geo.d[1], geo.d[2]};
+  const double h11 = geo.h11, h12 = geo.h12, h22 = geo.h22;
+  for (int slot = 0; slot < 4; ++slot) {
+    if (!(used & (1u << slot))) continue;
+    for (int i = 0; i < 3; ++i, ++k) {
+      const int cc = 3 * slot + i;
+      const double* p = P + 3 * cc;
+      const double* pd = Pd + 3 * cc;
+      lin.cols[k] = kOnA ? cc : 12 + cc;
+      const double jx = sign * p[0], jy = sign * p[1], jz = sign * p[2];
+      lin.Jx[k] = jx;
+      lin.Jy[k] = jy;
+      lin.Jz[k] = jz;
+      double b0, b1;
+      const int i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
+      const bool along_i = p[i1] == 0.0 && p[i2] == 0.0;
+      axial = axial && along_i;
+      if (along_i && pd[i1] == 0.0 && pd[i2] == 0.0) {
+        // A column along axis i (every column of a segment linear in X):
+        // the products with the zeros drop out of the dot products.
+        const double pi = p[i], qi = pd[i];
+        lin.g[k] = n[i] * (sign * pi);
+        if (kOnA) {
+          b0 = pi * ta[i] + qi * d[i];
+          b1 = -(pi * tb[i]);
+          lin.av[k] = qi * n[i];
+          lin.bv[k] = 0.0;
+        } else {
+          b0 = -(pi * ta[i]);
+          b1 = pi * tb[i] - qi * d[i];
+          lin.av[k] = 0.0;
+          lin.bv[k] = -(qi * n[i]);
+        }
+      } else if (kOnA) {
+        lin.g[k] = n[0] * jx + n[1] * jy + n[2] * jz;
+        b0 = curve::dot3(p, ta) + curve::dot3(pd, d);
+        b1 = -curve::dot3(p, tb);
+        lin.av[k] = curve::dot3(pd, n);
+        lin.bv[k] = 0.0;
+      } else {
+        lin.g[k] = n[0] * jx + n[1] * jy + n[2] * jz;
+        b0 = -curve::dot3(p, ta);
+        b1 = curve::dot3(p, tb) - curve::dot3(pd, d);
+        lin.av[k] = 0.0;
+        lin.bv[k] = -curve::dot3(pd, n);
+      }
+      lin.B0[k] = b0;
+      lin.B1[k] = b1;
+      lin.C0[k] = (h22 * b0 - h12 * b1) * inv_det;  // H^-1 B
+      lin.C1[k] = (h11 * b1 - h12 * b0) * inv_det;
+    }
+  }
+  return k;
+}
 
 }  // namespace
 
 void linearize(unsigned used_a, unsigned used_b, const ContactGeometry& geo, Linearization& lin) {
-  const unsigned used[2] = {used_a, used_b};
-  int m = 0;
-  for (int beam = 0; beam < 2; ++beam)
-    for (int slot = 0; slot < 4; ++slot)
-      if (used[beam] & (1u << slot))
-        for (int i = 0; i < 3; ++i) lin.cols[m++] = 12 * beam + 3 * slot + i;
-  lin.m = m;
-
-  const double* n = geo.n;
   const double inv_det = geo.inv_unit * geo.inv_unit / geo.det;  // H is in units of unit^2
-  for (int k = 0; k < m; ++k) {
-    const int c = lin.cols[k];
-    const bool on_a = c < 12;
-    const int cc = on_a ? c : c - 12;
-    const double* P = on_a ? geo.PA : geo.PB;
-    const double sign = on_a ? 1.0 : -1.0;
-    lin.Jx[k] = sign * P[3 * cc];
-    lin.Jy[k] = sign * P[1 + 3 * cc];
-    lin.Jz[k] = sign * P[2 + 3 * cc];
-    lin.g[k] = n[0] * lin.Jx[k] + n[1] * lin.Jy[k] + n[2] * lin.Jz[k];
-    if (on_a) {
-      lin.B0[k] = col_dot(geo.PA, cc, geo.ta) + col_dot(geo.PAd, cc, geo.d);
-      lin.B1[k] = -col_dot(geo.PA, cc, geo.tb);
-      lin.av[k] = col_dot(geo.PAd, cc, n);
-      lin.bv[k] = 0.0;
-    } else {
-      lin.B0[k] = -col_dot(geo.PB, cc, geo.ta);
-      lin.B1[k] = col_dot(geo.PB, cc, geo.tb) - col_dot(geo.PBd, cc, geo.d);
-      lin.av[k] = 0.0;
-      lin.bv[k] = -col_dot(geo.PBd, cc, n);
-    }
-    lin.C0[k] = (geo.h22 * lin.B0[k] - geo.h12 * lin.B1[k]) * inv_det;  // H^-1 B
-    lin.C1[k] = (geo.h11 * lin.B1[k] - geo.h12 * lin.B0[k]) * inv_det;
-  }
+  for (int i = 0; i < 3; ++i) lin.n[i] = geo.n[i];
+  bool axial = true;
+  const int m = linearize_beam<true>(used_a, geo, inv_det, lin, 0, axial);
+  lin.m = linearize_beam<false>(used_b, geo, inv_det, lin, m, axial);
+  lin.axial = axial;
 }
 
 }  // namespace pair

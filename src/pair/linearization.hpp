@@ -22,6 +22,8 @@ struct Linearization {
   double B0[kNdof], B1[kNdof];  // B = d(grad phi)/dX
   double C0[kNdof], C1[kNdof];  // H^-1 B: dxi/dX = -C0, deta/dX = -C1
   double av[kNdof], bv[kNdof];  // n . P_A,xi on A's columns, -n . P_B,eta on B's
+  double n[3];                  // the unit normal (g = n . J)
+  bool axial = false;           // every used column of J along one axis (cols[k] % 3)
 };
 
 // The closest points' state needed by linearize(): the 3x12 jacobians P, Pd
