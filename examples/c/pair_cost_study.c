@@ -8,7 +8,10 @@
  *
  * Targets (issue 3): analytic tangent at least 20x faster than the
  * finite-difference tangent; hermite-nodal residual+tangent at most 3x the
- * linear kind's. The program prints both ratios and whether they are met. */
+ * linear kind's. The program prints both ratios and whether they are met.
+ * Then it times the same crossings with Coulomb friction (sliding, with a
+ * committed history) against the frictionless evaluations: what friction
+ * costs. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -64,32 +67,33 @@ typedef struct {
   const b2b_params *params;
   int segments[6];
   double X[N_CONFIGS][24];
+  double hist[N_CONFIGS][16]; /* committed histories (zero: fresh) */
   double radii[2];
   int hist_len;
 } bench_t;
 
 static double sink;
 
-static void eval(const bench_t *b, const double *X, double *R, double *K) {
-  double hist[64] = {0}, hist_new[64], info[32];
+static void eval(const bench_t *b, int j, const double *X, double *R, double *K) {
+  double hist_new[64], info[32];
   int status;
   char msg[B2B_ERRMSG_LEN] = "";
-  const int st = b2b_pair_eval(b->params, b->segments, X, NULL, b->radii, hist, hist_new,
+  const int st = b2b_pair_eval(b->params, b->segments, X, NULL, b->radii, b->hist[j], hist_new,
                                b->hist_len, &status, info, R, K, 24, msg, sizeof msg);
   check(st, "b2b_pair_eval", msg);
 }
 
 /* The tangent by central differences of the residual. */
-static void fd_tangent(const bench_t *b, const double *X, double *R, double *K) {
-  eval(b, X, R, NULL);
+static void fd_tangent(const bench_t *b, int j, const double *X, double *R, double *K) {
+  eval(b, j, X, R, NULL);
   for (int a = 0; a < 24; ++a) {
     double Xp[24], Rp[24], Rm[24];
     const double h = 1e-6;
     memcpy(Xp, X, sizeof Xp);
     Xp[a] = X[a] + h;
-    eval(b, Xp, Rp, NULL);
+    eval(b, j, Xp, Rp, NULL);
     Xp[a] = X[a] - h;
-    eval(b, Xp, Rm, NULL);
+    eval(b, j, Xp, Rm, NULL);
     for (int r = 0; r < 24; ++r) K[r + 24 * a] = (Rp[r] - Rm[r]) / (2 * h);
   }
 }
@@ -101,12 +105,69 @@ static double trial(const bench_t *b, int v, int reps) {
   const double t0 = now_ns();
   for (int r = 0; r < reps; ++r)
     for (int j = 0; j < N_CONFIGS; ++j) {
-      if (v == 0) eval(b, b->X[j], R, NULL);
-      else if (v == 1) eval(b, b->X[j], R, K);
-      else fd_tangent(b, b->X[j], R, K);
+      if (v == 0) eval(b, j, b->X[j], R, NULL);
+      else if (v == 1) eval(b, j, b->X[j], R, K);
+      else fd_tangent(b, j, b->X[j], R, K);
       sink += R[3] + K[30];
     }
   return (now_ns() - t0) / (reps * N_CONFIGS);
+}
+
+/* Sets up the crossings of kind k and checks that every one is an active
+ * contact whose analytic tangent agrees with the differences (a guard
+ * against timing the wrong thing). With slide != 0 each crossing first gets
+ * a committed history from a step in which A was displaced by slide along
+ * x, so that friction works on a sliding contact. Returns 0 on failure. */
+static int setup(bench_t *b, const b2b_params *params, int k, double slide) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  memset(b, 0, sizeof *b);
+  b->params = params;
+  const int seg[6] = {kKinds[k], 0, 0, kKinds[k], 0, 0};
+  memcpy(b->segments, seg, sizeof seg);
+  b->radii[0] = 0.2;
+  b->radii[1] = 0.15;
+  check(b2b_params_history_size(params, &b->hist_len, msg, sizeof msg), "history size", msg);
+  for (int j = 0; j < N_CONFIGS; ++j) {
+    make_config(j, b->X[j]);
+    if (slide != 0.0) {
+      double X0[24], R[24], info[32], fresh[16] = {0};
+      int status;
+      memcpy(X0, b->X[j], sizeof X0);
+      for (int a = 0; a < 12; a += 3) X0[a] -= slide;
+      check(b2b_pair_eval(params, b->segments, X0, NULL, b->radii, fresh, b->hist[j],
+                          b->hist_len, &status, info, R, NULL, 0, msg, sizeof msg),
+            "b2b_pair_eval", msg);
+    }
+  }
+  for (int j = 0; j < N_CONFIGS; ++j) {
+    static double Ka[576], Kf[576];
+    double R[24], info[32], hist_new[64];
+    int status;
+    check(b2b_pair_eval(params, b->segments, b->X[j], NULL, b->radii, b->hist[j], hist_new,
+                        b->hist_len, &status, info, R, Ka, 24, msg, sizeof msg),
+          "b2b_pair_eval", msg);
+    if (status != B2B_CONTACT_ACTIVE) {
+      fprintf(stderr, "pair_cost_study: %s configuration %d is not active (%d)\n", kNames[k], j,
+              status);
+      return 0;
+    }
+    if (slide != 0.0 && info[B2B_INFO_FRICTION_STATE] != B2B_FRICTION_SLIP) {
+      fprintf(stderr, "pair_cost_study: %s configuration %d does not slip\n", kNames[k], j);
+      return 0;
+    }
+    fd_tangent(b, j, b->X[j], R, Kf);
+    double err = 0, scale = 0;
+    for (int i = 0; i < 576; ++i) {
+      err = fmax(err, fabs(Ka[i] - Kf[i]));
+      scale = fmax(scale, fabs(Ka[i]));
+    }
+    if (err > 1e-5 * scale) {
+      fprintf(stderr, "pair_cost_study: %s configuration %d: tangents differ by %g\n", kNames[k],
+              j, err / scale);
+      return 0;
+    }
+  }
+  return 1;
 }
 
 int main(int argc, char **argv) {
@@ -117,43 +178,9 @@ int main(int argc, char **argv) {
   check(b2b_params_set_real(params, "penalty", 1e3, msg, sizeof msg), "set penalty", msg);
   check(b2b_params_finalize(params, msg, sizeof msg), "finalize", msg);
 
-  bench_t bench[N_KINDS];
-  for (int k = 0; k < N_KINDS; ++k) {
-    bench_t *b = &bench[k];
-    b->params = params;
-    const int seg[6] = {kKinds[k], 0, 0, kKinds[k], 0, 0};
-    memcpy(b->segments, seg, sizeof seg);
-    b->radii[0] = 0.2;
-    b->radii[1] = 0.15;
-    check(b2b_params_history_size(params, &b->hist_len, msg, sizeof msg), "history size", msg);
-    for (int j = 0; j < N_CONFIGS; ++j) make_config(j, b->X[j]);
-    /* every configuration is an active contact, and the analytic tangent
-     * agrees with the differences (a guard against timing the wrong thing) */
-    for (int j = 0; j < N_CONFIGS; ++j) {
-      static double Ka[576], Kf[576];
-      double R[24], info[32], hist[64] = {0}, hist_new[64];
-      int status;
-      check(b2b_pair_eval(params, b->segments, b->X[j], NULL, b->radii, hist, hist_new,
-                          b->hist_len, &status, info, R, Ka, 24, msg, sizeof msg),
-            "b2b_pair_eval", msg);
-      if (status != B2B_CONTACT_ACTIVE) {
-        fprintf(stderr, "pair_cost_study: %s configuration %d is not active (%d)\n", kNames[k],
-                j, status);
-        return EXIT_FAILURE;
-      }
-      fd_tangent(b, b->X[j], R, Kf);
-      double err = 0, scale = 0;
-      for (int i = 0; i < 576; ++i) {
-        err = fmax(err, fabs(Ka[i] - Kf[i]));
-        scale = fmax(scale, fabs(Ka[i]));
-      }
-      if (err > 1e-5 * scale) {
-        fprintf(stderr, "pair_cost_study: %s configuration %d: tangents differ by %g\n",
-                kNames[k], j, err / scale);
-        return EXIT_FAILURE;
-      }
-    }
-  }
+  static bench_t bench[N_KINDS];
+  for (int k = 0; k < N_KINDS; ++k)
+    if (!setup(&bench[k], params, k, 0)) return EXIT_FAILURE;
 
   const int trials = quick ? 2 : 25;
   const int reps[3] = {quick ? 20 : 400, quick ? 20 : 400, quick ? 1 : 12};
@@ -177,6 +204,37 @@ int main(int argc, char **argv) {
   printf("\nTargets: analytic tangent >= 20x faster than FD: %.1fx (%s); hermite-nodal "
          "residual+tangent <= 3x linear: %.2fx (%s)\n",
          worst_fd, worst_fd >= 20 ? "met" : "NOT met", nodal, nodal <= 3 ? "met" : "NOT met");
+
+  /* What friction costs: the same crossings, sliding (slip state, committed
+   * history), mu 0.3, against the frictionless evaluations above. */
+  b2b_params *fparams = NULL;
+  check(b2b_params_create(&fparams, msg, sizeof msg), "b2b_params_create", msg);
+  check(b2b_params_set_real(fparams, "penalty", 1e3, msg, sizeof msg), "set penalty", msg);
+  check(b2b_params_set_real(fparams, "friction", 0.3, msg, sizeof msg), "set friction", msg);
+  check(b2b_params_set_real(fparams, "tangential_penalty", 1e3, msg, sizeof msg), "eps_T", msg);
+  check(b2b_params_finalize(fparams, msg, sizeof msg), "finalize", msg);
+  static bench_t fbench[N_KINDS];
+  for (int k = 0; k < N_KINDS; ++k)
+    if (!setup(&fbench[k], fparams, k, 0.05)) return EXIT_FAILURE;
+  double fbest[N_KINDS][2], nbest[N_KINDS][2];
+  for (int k = 0; k < N_KINDS; ++k) fbest[k][0] = fbest[k][1] = nbest[k][0] = nbest[k][1] = 1e300;
+  for (int t = 0; t < trials; ++t)
+    for (int v = 0; v < 2; ++v)
+      for (int k = 0; k < N_KINDS; ++k) {
+        nbest[k][v] = fmin(nbest[k][v], trial(&bench[k], v, reps[v]));
+        fbest[k][v] = fmin(fbest[k][v], trial(&fbench[k], v, reps[v]));
+      }
+  printf("\nCost of Coulomb friction (mu 0.3, sliding contacts), same crossings, best of %d "
+         "trials\n\n",
+         trials);
+  printf("| kind | residual [ns] | with friction | ratio | residual + tangent [ns] | with "
+         "friction | ratio |\n");
+  printf("|---|---:|---:|---:|---:|---:|---:|\n");
+  for (int k = 0; k < N_KINDS; ++k)
+    printf("| %s | %.0f | %.0f | %.2f | %.0f | %.0f | %.2f |\n", kNames[k], nbest[k][0],
+           fbest[k][0], fbest[k][0] / nbest[k][0], nbest[k][1], fbest[k][1],
+           fbest[k][1] / nbest[k][1]);
+  b2b_params_destroy(&fparams);
   if (sink == 1.2345) printf(" ");
   b2b_params_destroy(&params);
   return EXIT_SUCCESS;
