@@ -65,8 +65,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   std::memcpy(out.history, hist_old, hist_len * sizeof(double));
   // Friction history is that of the committed step only if this pair is
   // active now (set below); a pair without force forgets it.
-  if (hist_len > kHistoryLength)
-    for (int i = kHistoryLength; i < hist_len; ++i) out.history[i] = 0.0;
+  for (int i = kHistoryLength; i < hist_len; ++i) out.history[i] = 0.0;
   // K is zero unless the pair is active; an active pair with all 24 columns
   // in use overwrites all of it, so zero it only where that is not so.
   auto zero_K = [K]() {

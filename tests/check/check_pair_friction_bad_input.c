@@ -501,11 +501,11 @@ static int ok_or_range(const char *ctx, const b2b_params *p, const problem *pb,
 START_TEST(huge_tangential_penalty_and_displacement) {
   char ctx[128];
   const double eps_t[] = {1e300, 1e3};
-  const double scales[] = {1.0, 1e10, 1e90};
+  const double scales[] = {1.0, 1e10, 1e90, 1e-10, 1e-90};
   int valid = 0, range = 0;
   for (int e = 0; e < 2; ++e) {
     b2b_params *p = tst_params_friction(B2B_LAW_LINEAR, EPS_N, 0.0, MU, eps_t[e]);
-    for (int s = 0; s < 3; ++s) {
+    for (int s = 0; s < 5; ++s) {
       problem pb;
       outputs o;
       double h0[HMAX] = {0}, h1[HMAX];
@@ -523,6 +523,60 @@ START_TEST(huge_tangential_penalty_and_displacement) {
     b2b_params_destroy(&p);
   }
   ck_assert_int_ge(valid, 1);
+}
+END_TEST
+
+/* Scale invariance at the extremes: with coordinates and radii scaled by
+ * s (penalties fixed), gaps, slips, forces and the residual scale by s and
+ * the tangent is unchanged, in stick and in slip, from s = 1e-90 to 1e90. */
+START_TEST(friction_scales_with_the_coordinates) {
+  const double scales[] = {1e-90, 1e-10, 1e10, 1e90};
+  const double shifts[2] = {0.001, 0.3}; /* stick (eps_T 0.001 < mu f_N), slip */
+  b2b_params *p = tst_params_friction(B2B_LAW_LINEAR, EPS_N, 0.0, MU, EPS_T);
+  for (int k = 0; k < 2; ++k) {
+    outputs ref, o;
+    problem pb;
+    double h0[HMAX] = {0}, h1[HMAX];
+    make_problem(0.0, 1.0, &pb);
+    expect_ok("scale 1, first step", p, &pb, h0, 12, &ref);
+    memcpy(h1, ref.hist_new, sizeof h1);
+    make_problem(shifts[k], 1.0, &pb);
+    expect_ok("scale 1, moved", p, &pb, h1, 12, &ref);
+    ck_assert(ref.info[B2B_INFO_FRICTION_STATE] == (k ? B2B_FRICTION_SLIP : B2B_FRICTION_STICK));
+    for (int j = 0; j < 4; ++j) {
+      const double sc = scales[j];
+      char ctx[96];
+      CTX("scale %g, %s", sc, k ? "slip" : "stick");
+      make_problem(0.0, sc, &pb);
+      expect_ok(ctx, p, &pb, h0, 12, &o);
+      memcpy(h1, o.hist_new, sizeof h1);
+      make_problem(shifts[k], sc, &pb);
+      expect_ok(ctx, p, &pb, h1, 12, &o);
+      ck_assert_msg(o.info[B2B_INFO_FRICTION_STATE] == ref.info[B2B_INFO_FRICTION_STATE],
+                    "%s: friction state %g", ctx, o.info[B2B_INFO_FRICTION_STATE]);
+      const int scaled[] = {B2B_INFO_GAP, B2B_INFO_NORMAL_FORCE, B2B_INFO_TANGENTIAL_FORCE,
+                            B2B_INFO_TANGENTIAL_FORCE + 1, B2B_INFO_TANGENTIAL_FORCE + 2,
+                            B2B_INFO_SLIP, B2B_INFO_SLIP + 1, B2B_INFO_SLIP + 2};
+      for (int i = 0; i < 8; ++i) {
+        const double want = ref.info[scaled[i]] * sc, got = o.info[scaled[i]];
+        ck_assert_msg(fabs(got - want) <= 1e-11 * fabs(sc) * (1 + fabs(ref.info[scaled[i]])),
+                      "%s: info[%d] = %g, want %g", ctx, scaled[i], got, want);
+      }
+      double rmax = 0.0, kmax = 0.0, rerr = 0.0, kerr = 0.0;
+      for (int i = 0; i < 24; ++i) {
+        rmax = fmax(rmax, fabs(ref.residual[i]));
+        rerr = fmax(rerr, fabs(o.residual[i] / sc - ref.residual[i]));
+      }
+      for (int i = 0; i < 576; ++i) {
+        kmax = fmax(kmax, fabs(ref.tangent[i]));
+        kerr = fmax(kerr, fabs(o.tangent[i] - ref.tangent[i]));
+      }
+      ck_assert_msg(rerr <= 1e-11 * rmax, "%s: residual / s differs by %g (rel.)", ctx,
+                    rerr / rmax);
+      ck_assert_msg(kerr <= 1e-9 * kmax, "%s: tangent differs by %g (rel.)", ctx, kerr / kmax);
+    }
+  }
+  b2b_params_destroy(&p);
 }
 END_TEST
 
@@ -904,6 +958,7 @@ static Suite *make_suite(void) {
   tcase_add_test(th, history_friction_slots_out_of_range);
   tcase_add_test(th, huge_tangential_penalty_and_displacement);
   tcase_add_test(th, tiny_tangential_penalty);
+  tcase_add_test(th, friction_scales_with_the_coordinates);
   suite_add_tcase(s, th);
   TCase *tho = tcase_create("handover");
   tcase_add_test(tho, handover_null_arguments);
