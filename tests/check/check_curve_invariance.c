@@ -23,10 +23,6 @@ static void random_rotation(tst_rng *rng, double Q[9]) {
   memcpy(Q, R, sizeof R);
 }
 
-static void rotate(const double Q[9], const double *v, double *out) {
-  for (int i = 0; i < 3; ++i) out[i] = Q[i] * v[0] + Q[i + 3] * v[1] + Q[i + 6] * v[2];
-}
-
 typedef struct {
   double scale, offset;
 } frame_t;
@@ -43,11 +39,11 @@ static void check_case(tst_rng *rng, int kind, int sr, int er, frame_t f) {
   const double nd = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
   for (int i = 0; i < 3; ++i) t[i] = f.offset * dir[i] / nd;
   for (int k = 0; k < 4; ++k) {
-    rotate(Q, patch + 3 * k, moved + 3 * k);
+    tst_rotate(Q, patch + 3 * k, moved + 3 * k);
     for (int i = 0; i < 3; ++i) moved[3 * k + i] = f.scale * moved[3 * k + i] + t[i];
   }
-  rotate(Q, tangents, mtan);
-  rotate(Q, tangents + 3, mtan + 3);
+  tst_rotate(Q, tangents, mtan);
+  tst_rotate(Q, tangents + 3, mtan + 3);
 
   /* Round-off of the moved coordinates, relative to the patch size s. */
   const double eps = 2.220446049250313e-16;
@@ -61,7 +57,7 @@ static void check_case(tst_rng *rng, int kind, int sr, int er, frame_t f) {
   /* points: y = s Q x + t; xi-derivatives: s Q x' */
   double want[9];
   for (int c = 0; c < 3; ++c) {
-    rotate(Q, x + 3 * c, want + 3 * c);
+    tst_rotate(Q, x + 3 * c, want + 3 * c);
     for (int i = 0; i < 3; ++i) want[3 * c + i] = f.scale * want[3 * c + i] + (c == 0 ? t[i] : 0);
   }
   double e = 0;

@@ -56,10 +56,6 @@ static void normalize3(double *v) {
   for (int i = 0; i < 3; ++i) v[i] /= n;
 }
 
-static void rotate(const double Q[9], const double *v, double *out) {
-  for (int i = 0; i < 3; ++i) out[i] = Q[i] * v[0] + Q[i + 3] * v[1] + Q[i + 6] * v[2];
-}
-
 /* Rotation by th about axis (column-major, Rodrigues). */
 static void axis_rotation(const double *axis_in, double th, double Q[9]) {
   double k[3] = {axis_in[0], axis_in[1], axis_in[2]};
@@ -83,7 +79,7 @@ static void random_rotation(tst_rng *rng, double th_lo, double th_hi, double Q[9
 static void rigid_motion(const double Q[9], const double t[3], const double *X, int nodes,
                          double *Y) {
   for (int k = 0; k < nodes; ++k) {
-    rotate(Q, X + 3 * k, Y + 3 * k);
+    tst_rotate(Q, X + 3 * k, Y + 3 * k);
     for (int i = 0; i < 3; ++i) Y[3 * k + i] += t[i];
   }
 }
@@ -759,35 +755,25 @@ static void assert_rotated(const double Q[9], const double X[24], const double i
                 "%s: |T| %.17g vs %.17g", what, t1, norm3(i2 + B2B_INFO_TANGENTIAL_FORCE));
   ck_assert(fabs(i1[B2B_INFO_DISSIPATION] - i2[B2B_INFO_DISSIPATION]) <= 1e-10 * L * L / EPS_T);
   double want[3];
-  rotate(Q, i1 + B2B_INFO_TANGENTIAL_FORCE, want);
+  tst_rotate(Q, i1 + B2B_INFO_TANGENTIAL_FORCE, want);
   ck_assert_msg(dist3(want, i2 + B2B_INFO_TANGENTIAL_FORCE) <= 1e-10 * L, "%s: T does not rotate",
                 what);
-  rotate(Q, i1 + B2B_INFO_SLIP, want);
+  tst_rotate(Q, i1 + B2B_INFO_SLIP, want);
   ck_assert(dist3(want, i2 + B2B_INFO_SLIP) <= 1e-10 * L / EPS_T);
   for (int k = 0; k < 8; ++k) {
     if (isnan(X[3 * k])) continue;
-    rotate(Q, R1 + 3 * k, want);
+    tst_rotate(Q, R1 + 3 * k, want);
     ck_assert_msg(dist3(want, R2 + 3 * k) <= 1e-10 * f, "%s: residual of node %d does not rotate",
                   what, k);
   }
-  double err = 0;
-  for (int bc = 0; bc < 8; ++bc)
-    for (int br = 0; br < 8; ++br)
-      for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) {
-          double v = 0;
-          for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-              v += Q[i + 3 * a] * K1[(3 * br + a) + 24 * (3 * bc + b)] * Q[j + 3 * b];
-          err = fmax(err, fabs(K2[(3 * br + i) + 24 * (3 * bc + j)] - v));
-        }
+  const double err = tst_tangent_rotation_error(Q, K1, K2);
   ck_assert_msg(err <= 1e-10 * tst_max_abs(K1, 576), "%s: tangent not objective: %g of %g", what,
                 err, tst_max_abs(K1, 576));
   /* the history: the same anchors and force components, the normal rotated */
   ck_assert(fabs(h1[5] - h2[5]) <= 1e-11 && fabs(h1[6] - h2[6]) <= 1e-11);
   ck_assert(fabs(h1[9] - h2[9]) <= 1e-10 * L && fabs(h1[10] - h2[10]) <= 1e-10 * L);
   ck_assert(h1[8] == h2[8] && h1[11] == h2[11]);
-  rotate(Q, h1 + 2, want);
+  tst_rotate(Q, h1 + 2, want);
   ck_assert(dist3(want, h2 + 2) <= 1e-12);
 }
 
@@ -886,7 +872,7 @@ START_TEST(rigid_motion_within_a_step_is_no_slip) {
     ck_assert_msg(info[B2B_INFO_FRICTION_STATE] == B2B_FRICTION_STICK, "%s: state %g", what,
                   info[B2B_INFO_FRICTION_STATE]);
     double want[3];
-    rotate(Q, ia + B2B_INFO_TANGENTIAL_FORCE, want);
+    tst_rotate(Q, ia + B2B_INFO_TANGENTIAL_FORCE, want);
     const double e = dist3(want, info + B2B_INFO_TANGENTIAL_FORCE);
     worst_stuck = fmax(worst_stuck, e / ta);
     ck_assert_msg(e <= 1e-10 * ta, "%s: stuck force %g changes by %g under a rigid motion", what,

@@ -157,3 +157,18 @@ int tst_pair_ext(const b2b_params *params, const tst_pair_spec *spec, const doub
   ck_assert_msg(st == B2B_OK, "b2b_pair_eval returned %d: %s", st, msg);
   return status;
 }
+
+double tst_tangent_rotation_error(const double Q[9], const double K1[576], const double K2[576]) {
+  double err = 0;
+  for (int bc = 0; bc < 8; ++bc)
+    for (int br = 0; br < 8; ++br)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+          double v = 0;
+          for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+              v += Q[i + 3 * a] * K1[(3 * br + a) + 24 * (3 * bc + b)] * Q[j + 3 * b];
+          err = fmax(err, fabs(K2[(3 * br + i) + 24 * (3 * bc + j)] - v));
+        }
+  return err;
+}

@@ -39,4 +39,8 @@ int tst_pair_ext(const b2b_params *params, const tst_pair_spec *spec, const doub
                  const double end_tangents[12], const double *hist_old, double *hist_new,
                  double info[32], double residual[24], double *tangent);
 
+/* Largest |K2 - Q K1 Q^T| over the 3x3 node blocks of two 24x24 tangents
+ * (column-major): how far K2 is from K1 turned by the rotation Q. */
+double tst_tangent_rotation_error(const double Q[9], const double K1[576], const double K2[576]);
+
 #endif

@@ -72,6 +72,10 @@ void tst_eval(int kind, int start_rule, int end_rule, const double patch[12],
                 msg);
 }
 
+void tst_rotate(const double Q[9], const double v[3], double out[3]) {
+  for (int i = 0; i < 3; ++i) out[i] = Q[i] * v[0] + Q[i + 3] * v[1] + Q[i + 6] * v[2];
+}
+
 double tst_max_abs(const double *a, int n) {
   double m = 0.0;
   for (int i = 0; i < n; ++i) m = fmax(m, fabs(a[i]));

@@ -31,6 +31,9 @@ void tst_eval(int kind, int start_rule, int end_rule, const double patch[12],
               double d2x[864]);
 
 double tst_max_abs(const double *a, int n);
+
+/* out = Q v, Q a 3x3 rotation, column-major. */
+void tst_rotate(const double Q[9], const double v[3], double out[3]);
 /* max|a - b| / max(max|a|, max|b|, floor): relative difference of two arrays. */
 double tst_rel_diff(const double *a, const double *b, int n, double floor);
 
