@@ -27,5 +27,11 @@ inline double max_abs3(const double* a) {
 // boundary), so the plain sum of squares cannot overflow.
 inline double norm3(const double* a) { return std::sqrt(dot3(a, a)); }
 
+inline void cross3(const double* a, const double* b, double* out) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
 }  // namespace curve
 }  // namespace b2b

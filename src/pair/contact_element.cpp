@@ -17,6 +17,7 @@ namespace b2b {
 namespace pair {
 namespace {
 
+using curve::cross3;
 using curve::dot3;
 using curve::max_abs3;
 using curve::norm3;
@@ -139,9 +140,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   }
   const double na = norm3(ta), nb = norm3(tb);
   double cr[3];
-  cr[0] = ta[1] * tb[2] - ta[2] * tb[1];
-  cr[1] = ta[2] * tb[0] - ta[0] * tb[2];
-  cr[2] = ta[0] * tb[1] - ta[1] * tb[0];
+  cross3(ta, tb, cr);
   const double sin_angle = norm3(cr) / (na * nb);
   const double cos_angle = std::fabs(dot3(ta, tb)) / (na * nb);
   info[B2B_INFO_ANGLE] = std::atan2(sin_angle, cos_angle) * 180.0 / kPi;

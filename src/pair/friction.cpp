@@ -9,18 +9,9 @@
 
 namespace b2b {
 namespace pair {
-namespace {
-
+using curve::cross3;
 using curve::dot3;
 using curve::norm3;
-
-inline void cross3(const double* a, const double* b, double* out) {
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-}  // namespace
 
 FrictionResult friction_force(const Params& p, const FrictionContact& c, const double* hist_old) {
   FrictionResult fr;

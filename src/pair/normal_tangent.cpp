@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "../curve/vec3.hpp"
+
 namespace b2b {
 namespace pair {
 
@@ -47,8 +49,8 @@ void normal_tangent_upper(const Linearization& lin, double fp, double f_over_rho
     e[1] = -n[0];
     e[2] = 0.0;
   }
-  const double f[3] = {n[1] * e[2] - n[2] * e[1], n[2] * e[0] - n[0] * e[2],
-                       n[0] * e[1] - n[1] * e[0]};
+  double f[3];
+  curve::cross3(n, e, f);
   const double sq = -s / (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
   double p1[kNdof], p2[kNdof];
   for (int k = 0; k < m; ++k) {
