@@ -11,6 +11,7 @@
 #include "params_handle.hpp"
 #include "segment_checks.hpp"
 
+using b2b::capi::check_finalized;
 using b2b::capi::check_history;
 using b2b::capi::check_segment;
 using b2b::capi::guarded;
@@ -28,9 +29,7 @@ int b2b_pair_history_handover(const b2b_params* params, int beam, int direction,
                               char* errmsg, int errmsg_len) {
   const Reporter r("b2b_pair_history_handover", errmsg, errmsg_len);
   return guarded(r, [&]() -> int {
-    if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
-    if (!params->p.finalized)
-      return r.fail(B2B_ERR_STATE, "params is not finalized (call b2b_params_finalize first)");
+    if (int st = check_finalized(r, params)) return st;
     if (beam != 0 && beam != 1)
       return r.fail(B2B_ERR_UNKNOWN_KIND, "beam is %d: 0 (beam A) or 1 (beam B) expected", beam);
     if (direction != 1 && direction != -1)

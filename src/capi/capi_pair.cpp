@@ -11,6 +11,7 @@
 #include "params_handle.hpp"
 #include "segment_checks.hpp"
 
+using b2b::capi::check_finalized;
 using b2b::capi::check_history;
 using b2b::capi::check_segment;
 using b2b::capi::guarded;
@@ -32,9 +33,7 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
                   double* residual, double* tangent, int ldk, char* errmsg, int errmsg_len) {
   const Reporter r("b2b_pair_eval", errmsg, errmsg_len);
   return guarded(r, [&]() -> int {
-    if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
-    if (!params->p.finalized)
-      return r.fail(B2B_ERR_STATE, "params is not finalized (call b2b_params_finalize first)");
+    if (int st = check_finalized(r, params)) return st;
     if (segments == nullptr) return r.fail(B2B_ERR_NULL, "segments is NULL");
     if (X == nullptr) return r.fail(B2B_ERR_NULL, "X is NULL");
     if (radii == nullptr) return r.fail(B2B_ERR_NULL, "radii is NULL");

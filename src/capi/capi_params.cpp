@@ -10,6 +10,7 @@
 #include "firewall.hpp"
 #include "params_handle.hpp"
 
+using b2b::capi::check_finalized;
 using b2b::capi::guarded;
 using b2b::capi::Reporter;
 
@@ -184,8 +185,7 @@ int b2b_params_history_size(const b2b_params* params, int* n, char* errmsg, int 
   return guarded(r, [&]() -> int {
     if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
     if (n == nullptr) return r.fail(B2B_ERR_NULL, "n is NULL");
-    if (!params->p.finalized)
-      return r.fail(B2B_ERR_STATE, "params is not finalized (call b2b_params_finalize first)");
+    if (int st = check_finalized(r, params)) return st;
     *n = b2b::pair::history_length(params->p);
     return B2B_OK;
   });
