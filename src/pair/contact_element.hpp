@@ -1,11 +1,13 @@
 // The point-wise beam-to-beam contact element (Wriggers and Zavarise 1997) on
-// smoothed centrelines: closest points, ownership, sign-tracked normal and
-// gap, normal law, Coulomb friction, residual and exact tangent
-// (contact-notes.md 1.1-1.4 and 3).
+// smoothed centrelines, in three stages: kinematics (contact_kinematics.hpp:
+// closest points, ownership, sign-tracked normal and gap), force response
+// (here: normal law, Coulomb friction, residual) and the exact tangent
+// (tangent_assembly.hpp). doc/contact-element.md derives it.
 // A pure function of its inputs: no state, no allocation.
 #pragma once
 
 #include "../curve/segment.hpp"
+#include "contact_kinematics.hpp"
 #include "history.hpp"
 #include "linearization.hpp"
 #include "params.hpp"
@@ -15,6 +17,7 @@ namespace pair {
 
 constexpr int kInfoLength = 32;
 
+// A segment as the C API describes it, not yet built.
 struct SegmentInput {
   int kind, start_rule, end_rule;
   const double* X;              // 12 patch coordinates
@@ -38,10 +41,18 @@ struct PairFailure {
   curve::Failure segment;
 };
 
-// Inputs are valid (checked at the C boundary). K: 24 x 24, column-major,
-// leading dimension 24, or null for no tangent.
+// Builds both segments, then evaluate_built(). Inputs are valid (checked at
+// the C boundary).
 PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const SegmentInput& B,
                           const double* hist_old, PairResult& out, double* K);
+
+// The element on segments built with derivatives (a contact model builds each
+// segment once per update and evaluates every candidate pair on them).
+// hist_old: a valid history of history_length(params) doubles. K: 24 x 24,
+// column-major, leading dimension 24, or null for no tangent; zero when the
+// pair is not active.
+void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef& B,
+                    const double* hist_old, PairResult& out, double* K);
 
 }  // namespace pair
 }  // namespace b2b

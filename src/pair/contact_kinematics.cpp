@@ -1,0 +1,140 @@
+#include "contact_kinematics.hpp"
+
+#include <cfloat>
+#include <cmath>
+
+#include <b2b/b2b.h>
+
+#include "../curve/vec3.hpp"
+#include "closest_point.hpp"
+#include "history.hpp"
+
+namespace b2b {
+namespace pair {
+namespace {
+
+using curve::cross3;
+using curve::dot3;
+using curve::max_abs3;
+using curve::norm3;
+using curve::sub3;
+
+constexpr double kJointBand = 1e-13;  // "on a joint": within this many segment lengths
+constexpr double kPi = 3.14159265358979323846;
+
+// Whether a segment owns the closest point at parameter t (see b2b_pair.h):
+// [-1, 1), the end joint going to the next segment unless the beam ends there.
+bool owns(double t, double speed, double length, bool beam_ends_here) {
+  const double band = kJointBand * length;
+  if (std::fabs(t + 1.0) * speed <= band) return true;
+  if (std::fabs(t - 1.0) * speed <= band) return beam_ends_here;
+  return t > -1.0 && t < 1.0;
+}
+
+}  // namespace
+
+int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentRef& B,
+                       const double* hist_old, Kinematics& k, double* info, double* history) {
+  const curve::Segment &sa = *A.seg, &sb = *B.seg;
+  // Length scales: segment chords, and the coordinates' magnitude (rounding).
+  const double *a0 = sa.start_point(), *a1 = sa.end_point();
+  const double *b0 = sb.start_point(), *b1 = sb.end_point();
+  double t[3];
+  sub3(a1, a0, t);
+  const double len_a = norm3(t);
+  sub3(b1, b0, t);
+  const double len_b = norm3(t);
+  const double coord = std::fmax(std::fmax(max_abs3(a0), max_abs3(a1)),
+                                 std::fmax(max_abs3(b0), max_abs3(b1)));
+  const double tol_length = 1e-13 * (len_a + len_b) + 64.0 * DBL_EPSILON * coord;
+  // The length unit of the closest-point algebra below: products of four
+  // lengths (the Hessian's determinant) stay in range for any coordinates.
+  const double unit = len_a + len_b;
+  const double inv_unit = 1.0 / unit;
+  k.inv_unit = inv_unit;
+
+  // Closest points.
+  const bool has_history = hist_old[kHistTag] == kHistTagV1;
+  const bool has_normal = has_history && hist_old[kHistHasNormal] == 1.0;
+  double xi0, eta0;
+  if (params.warm_start && has_history) {
+    xi0 = std::fmin(1.0, std::fmax(-1.0, hist_old[kHistXi]));
+    eta0 = std::fmin(1.0, std::fmax(-1.0, hist_old[kHistEta]));
+  } else {
+    chord_start(a0, a1, b0, b1, unit, &xi0, &eta0);
+  }
+  const ClosestPoints cp =
+      closest_points(sa, sb, xi0, eta0, params.max_iterations, tol_length, unit);
+  k.xi = cp.xi;
+  k.eta = cp.eta;
+  info[B2B_INFO_XI] = cp.xi;
+  info[B2B_INFO_ETA] = cp.eta;
+  info[B2B_INFO_ITERATIONS] = cp.iterations;
+  if (!cp.converged) {
+    // An iteration that ran off the segment looked for a point that is not
+    // this pair's; otherwise the search failed.
+    const bool ran_off = std::fabs(cp.xi) > 1.0 || std::fabs(cp.eta) > 1.0;
+    return ran_off ? B2B_CONTACT_OUTSIDE : B2B_CONTACT_NOT_CONVERGED;
+  }
+  PointState &pa = k.pa, &pb = k.pb;
+  sa.point(k.xi, pa.x, pa.xd, pa.xdd);
+  sb.point(k.eta, pb.x, pb.xd, pb.xdd);
+  for (int i = 0; i < 3; ++i) {
+    info[B2B_INFO_POINT_A + i] = pa.x[i];
+    info[B2B_INFO_POINT_B + i] = pb.x[i];
+  }
+
+  // Crossing angle, and the Hessian of phi at the solution, in units of
+  // `unit` (h11, h12, h22 scale like length^2, det like length^4).
+  double ta[3], tb[3], tad[3], tbd[3], du[3];
+  for (int i = 0; i < 3; ++i) {
+    ta[i] = pa.xd[i] * inv_unit;
+    tb[i] = pb.xd[i] * inv_unit;
+    tad[i] = pa.xdd[i] * inv_unit;
+    tbd[i] = pb.xdd[i] * inv_unit;
+    k.d[i] = pa.x[i] - pb.x[i];
+    du[i] = k.d[i] * inv_unit;
+  }
+  const double na = norm3(ta), nb = norm3(tb);
+  double cr[3];
+  cross3(ta, tb, cr);
+  const double sin_angle = norm3(cr) / (na * nb);
+  const double cos_angle = std::fabs(dot3(ta, tb)) / (na * nb);
+  info[B2B_INFO_ANGLE] = std::atan2(sin_angle, cos_angle) * 180.0 / kPi;
+  k.h11 = dot3(ta, ta) + dot3(du, tad);
+  k.h22 = dot3(tb, tb) - dot3(du, tbd);
+  k.h12 = -dot3(ta, tb);
+  k.det = k.h11 * k.h22 - k.h12 * k.h12;
+  if (sin_angle < params.sin_parallel_angle || !(k.det > 1e-12 * na * na * nb * nb))
+    return B2B_CONTACT_PARALLEL;
+
+  // Sign-tracked normal and gap.
+  const double rho = norm3(k.d);
+  k.rho_signed = 0.0;  // 0: the normal does not rotate (intersecting axes)
+  if (rho <= tol_length) {
+    // The axes intersect: the normal is undefined, use the previous one.
+    if (!has_normal) return B2B_CONTACT_NO_NORMAL;
+    for (int i = 0; i < 3; ++i) k.n[i] = hist_old[kHistNormal + i];
+    k.gap = -A.radius - B.radius;
+  } else {
+    const double sign = (has_normal && dot3(k.d, hist_old + kHistNormal) < 0.0) ? -1.0 : 1.0;
+    k.rho_signed = sign * rho;
+    for (int i = 0; i < 3; ++i) k.n[i] = k.d[i] / k.rho_signed;
+    k.gap = k.rho_signed - A.radius - B.radius;
+  }
+  for (int i = 0; i < 3; ++i) info[B2B_INFO_NORMAL + i] = k.n[i];
+  info[B2B_INFO_GAP] = k.gap;
+  history[kHistTag] = kHistTagV1;
+  history[kHistHasNormal] = 1.0;
+  for (int i = 0; i < 3; ++i) history[kHistNormal + i] = k.n[i];
+  history[kHistXi] = k.xi;
+  history[kHistEta] = k.eta;
+
+  if (!owns(k.xi, na * unit, len_a, A.end_rule != B2B_END_NEIGHBOUR) ||
+      !owns(k.eta, nb * unit, len_b, B.end_rule != B2B_END_NEIGHBOUR))
+    return B2B_CONTACT_OUTSIDE;
+  return B2B_CONTACT_OPEN;
+}
+
+}  // namespace pair
+}  // namespace b2b

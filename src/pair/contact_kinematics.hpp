@@ -1,0 +1,46 @@
+// Kinematics of a contact pair (the first stage of the contact element):
+// closest points of the two smoothed axes, crossing angle and the parallel
+// threshold, the sign-tracked normal and gap, and which pair owns the point
+// (doc/contact-element.md). No force, no derivative in X.
+#pragma once
+
+#include "../curve/segment.hpp"
+#include "params.hpp"
+
+namespace b2b {
+namespace pair {
+
+// A segment already built (with derivatives) and what the element needs to
+// know about it besides its geometry.
+struct SegmentRef {
+  const curve::Segment* seg;
+  int kind, start_rule, end_rule;
+  double radius;
+};
+
+struct PointState {
+  double x[3], xd[3], xdd[3];  // x, dx/dxi, d2x/dxi2 at the closest point
+};
+
+struct Kinematics {
+  double xi = 0.0, eta = 0.0;
+  PointState pa, pb;
+  double d[3];            // x_A - x_B
+  double n[3];            // unit normal from B to A (sign-tracked)
+  double rho_signed = 0;  // signed axis distance; 0 where the normal is the history's
+  double gap = 0.0;
+  // Hessian of phi = |d|^2/2 in units of `unit` = chord_A + chord_B
+  double h11 = 0, h12 = 0, h22 = 0, det = 0, inv_unit = 0;
+};
+
+// Fills k and the geometric entries of info (B2B_INFO_XI .. _GAP, ANGLE,
+// ITERATIONS) and of history (tag, normal, xi, eta: the state a later
+// evaluation tracks). Returns B2B_CONTACT_OPEN when the pair owns a closest
+// point with a normal (the force is decided by the caller), else the status
+// of a pair that carries no force (OUTSIDE, PARALLEL, NOT_CONVERGED,
+// NO_NORMAL). hist_old: a valid history.
+int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentRef& B,
+                       const double* hist_old, Kinematics& k, double* info, double* history);
+
+}  // namespace pair
+}  // namespace b2b
