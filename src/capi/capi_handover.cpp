@@ -49,22 +49,21 @@ int b2b_pair_history_handover(const b2b_params* params, int beam, int direction,
     const double* Xs[2] = {from_X, to_X};
     const double* tans[2] = {from_end_tangents, to_end_tangents};
     double unit[2][6];
-    b2b::curve::Segment seg[2];
+    pr::SegmentInput in[2];
     for (int k = 0; k < 2; ++k) {
       const int* s = segs[k];
       if (int st = check_segment(r, names[k], s[0], s[1], s[2], Xs[k], tans[k], unit[k]))
         return st;
+      in[k] = pr::SegmentInput{s[0], s[1], s[2], Xs[k], unit[k], 0.0};
     }
     if (int st = check_history(r, params->p, "hist_from", hist_from, hist_len)) return st;
-    for (int k = 0; k < 2; ++k) {
-      const int* s = segs[k];
-      const b2b::curve::Failure f = seg[k].build(s[0], s[1], s[2], Xs[k], unit[k], false);
-      if (f.status != B2B_OK) return report_segment_failure(r, names[k], f);
-    }
 
     double h[pr::kHistoryLengthMax];
     std::memcpy(h, hist_from, hist_len * sizeof(double));
-    const pr::HandoverResult res = pr::handover_history(seg[0], seg[1], beam, direction, h, hist_len);
+    const pr::HandoverOutcome out = pr::handover(in[0], in[1], beam, direction, h, hist_len);
+    if (out.failure.status != B2B_OK)
+      return report_segment_failure(r, names[out.failure.beam], out.failure.segment);
+    const pr::HandoverResult& res = out.result;
     if (!res.adjacent)
       return r.fail(B2B_ERR_RANGE,
                     "the segments do not share the joint: %s of the from segment and %s of the "

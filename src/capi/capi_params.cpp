@@ -166,17 +166,20 @@ int b2b_params_finalize(b2b_params* params, char* errmsg, int errmsg_len) {
   return guarded(r, [&]() -> int {
     if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
     b2b::pair::Params& p = params->p;
-    if (p.finalized) return B2B_OK;
-    if (!p.penalty_set) return r.fail(B2B_ERR_STATE, "\"penalty\" has not been set");
-    if (p.law == B2B_LAW_QUADRATIC && !p.regularization_gap_set)
-      return r.fail(B2B_ERR_STATE,
-                    "\"law\" is B2B_LAW_QUADRATIC but \"regularization_gap\" has not been set");
-    if (p.friction > 0.0 && !p.tangential_penalty_set)
-      return r.fail(B2B_ERR_STATE,
-                    "\"friction\" is %g but \"tangential_penalty\" has not been set", p.friction);
-    p.sin_parallel_angle = std::sin(p.parallel_angle_deg * 3.14159265358979323846 / 180.0);
-    p.finalized = true;
-    return B2B_OK;
+    switch (b2b::pair::finalize(p)) {
+      case b2b::pair::MissingOption::None:
+        return B2B_OK;
+      case b2b::pair::MissingOption::Penalty:
+        return r.fail(B2B_ERR_STATE, "\"penalty\" has not been set");
+      case b2b::pair::MissingOption::RegularizationGap:
+        return r.fail(B2B_ERR_STATE,
+                      "\"law\" is B2B_LAW_QUADRATIC but \"regularization_gap\" has not been set");
+      case b2b::pair::MissingOption::TangentialPenalty:
+        return r.fail(B2B_ERR_STATE,
+                      "\"friction\" is %g but \"tangential_penalty\" has not been set",
+                      p.friction);
+    }
+    return r.fail(B2B_ERR_INTERNAL, "unclassified finalize outcome");
   });
 }
 

@@ -29,5 +29,25 @@ HandoverResult handover_history(const curve::Segment& from, const curve::Segment
   return res;
 }
 
+HandoverOutcome handover(const SegmentInput& from, const SegmentInput& to, int beam,
+                         int direction, double* hist, int len) {
+  HandoverOutcome out;
+  const SegmentInput* in[2] = {&from, &to};
+  curve::Segment seg[2];
+  for (int k = 0; k < 2; ++k) {
+    const SegmentInput& s = *in[k];
+    const curve::Failure f = seg[k].build(s.kind, s.start_rule, s.end_rule, s.X, s.unit_tangents,
+                                          false);
+    if (f.status) {
+      out.failure.status = f.status;
+      out.failure.beam = k;
+      out.failure.segment = f;
+      return out;
+    }
+  }
+  out.result = handover_history(seg[0], seg[1], beam, direction, hist, len);
+  return out;
+}
+
 }  // namespace pair
 }  // namespace b2b

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "../curve/segment.hpp"
+#include "contact_element.hpp"
 
 namespace b2b {
 namespace pair {
@@ -22,6 +23,15 @@ struct HandoverResult {
 // direction: +1 (to follows from) or -1.
 HandoverResult handover_history(const curve::Segment& from, const curve::Segment& to, int beam,
                                 int direction, double* hist, int len);
+
+// The same on segments not yet built (inputs valid): builds both, then
+// hands over. failure.beam says which segment was refused (0 from, 1 to).
+struct HandoverOutcome {
+  PairFailure failure;
+  HandoverResult result;
+};
+HandoverOutcome handover(const SegmentInput& from, const SegmentInput& to, int beam,
+                         int direction, double* hist, int len);
 
 }  // namespace pair
 }  // namespace b2b

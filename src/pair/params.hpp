@@ -22,5 +22,12 @@ struct Params {
   double sin_parallel_angle = 0.0;
 };
 
+// What finalize() found missing (a required option never set).
+enum class MissingOption { None, Penalty, RegularizationGap, TangentialPenalty };
+
+// Checks the options together and derives what evaluation needs; on success
+// the set is read-only (finalized). Finalizing twice is harmless.
+MissingOption finalize(Params& p);
+
 }  // namespace pair
 }  // namespace b2b
