@@ -98,5 +98,6 @@ B2B_EXPORT int b2b_abi_version(int *abi);
 
 #include <b2b/b2b_curve.h>
 #include <b2b/b2b_pair.h>
+#include <b2b/b2b_model.h>
 
 #endif /* B2B_H */

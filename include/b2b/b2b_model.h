@@ -1,0 +1,256 @@
+/*
+ * b2b contact model: the bookkeeping around the contact element. A host hands
+ * b2b all its beams once; every Newton iteration it passes the current nodal
+ * coordinates and gets back every active contact element, with search,
+ * active set, ownership at joints, handover of a contact (and its friction
+ * history) from one segment to the next, commit / cut-back and restart done
+ * for it. Included by <b2b/b2b.h>; do not include it on its own.
+ *
+ * Life cycle
+ * ----------
+ *   b2b_model_create
+ *   b2b_model_add_beam (once per beam), b2b_model_set_group_pair (per pair of
+ *   groups that may touch), b2b_model_set_self_contact, b2b_model_set_real /
+ *   _set_int (options)
+ *   b2b_model_finalize(n_nodes)
+ *   per load step:  per Newton iteration:  b2b_model_update(x)
+ *                                          b2b_model_contact_count / _get_contact,
+ *                                          or the assembly helpers
+ *                   converged: b2b_model_commit     failed: b2b_model_revert
+ *   b2b_model_save / b2b_model_restore (restart), b2b_model_stats
+ *   b2b_model_destroy
+ * Calls in the wrong state are B2B_ERR_STATE (update before finalize, commit
+ * or get_contact before an update, add_beam after finalize, ...). A failed
+ * call leaves the model as it was.
+ *
+ * Beams
+ * -----
+ * A beam is a chain of the host's node numbers (0-based in C), open or closed
+ * (a ring: the last node joins the first; do not repeat it), with a circular
+ * cross-section radius r > 0, a curve kind (B2B_CURVE_*) and a contact group
+ * (an int >= 0). Its segments are those of b2b_beam_segment_count /
+ * b2b_beam_segment_patch; open ends use B2B_END_REFLECT. A beam needs at
+ * least 2 nodes (3 if closed); a node may not appear twice in one beam.
+ * Beams may share host nodes (a frame): segments whose patches share a host
+ * node are never paired, on one beam or across beams.
+ *
+ * Groups
+ * ------
+ * Two beams are searched for contact only if their groups form a pair given a
+ * finalized b2b_params by b2b_model_set_group_pair (the model copies it; the
+ * host may destroy its handle). Different beams of one group g touch if the
+ * pair (g, g) is set. Between committed steps (before the first update, or
+ * right after a commit or revert) a pair's parameter set may be replaced by
+ * one of the same history length (penalty continuation); a different length
+ * is B2B_ERR_SIZE.
+ *
+ * Self-contact (b2b_model_set_self_contact) is off by default. When on, two
+ * segments of the same beam are paired only if they share no host node and
+ * the arc length between them, measured along the beam's chords in the
+ * configuration of the first update, exceeds the exclusion length (default,
+ * exclusion_length < 0: 4 r, longer than the pi r of the tightest fold a
+ * solid rod of radius r can make, so neighbours on a bent beam are never
+ * read as contact). It needs the group pair (g, g) of the beam's group g.
+ *
+ * Options (b2b_model_set_real / _set_int; at any time after create)
+ *   "search_margin"  real  default: the largest radius of the model's beams.
+ *                          The Verlet skin s of the broad phase (> 0).
+ *   "threads"        int   0 (default): as many as OpenMP offers; n >= 1:
+ *                          at most n threads for this model's updates.
+ *   "max_handover_hops" int  16: segments a contact may travel in one
+ *                          update (along both beams together), 1 .. 1000.
+ *
+ * Update (b2b_model_update)
+ * -------------------------
+ * x holds the current coordinates of all host nodes: node k at
+ * x[ldx*k + 0..2] (a 3 x n_cols column-major array with leading dimension
+ * ldx >= 3, so FEAP's x(ndm, numnp) works as is); n_cols >= n_nodes. Only
+ * nodes of beams are read (each must be finite and within B2B_COORD_MAX).
+ *   Broad phase: boxes around each segment (its Hermite control polygon,
+ *     which contains the curve) grown by r + g0/2 + 4s/3, in a bounding-
+ *     volume hierarchy over their Morton order (O(n log n), no global box or
+ *     cell size to set); rebuilt only when some node has moved more than s/2
+ *     since the last build, so that most iterations reuse the candidates.
+ *     g0: the largest regularization gap of the group pairs (0 without the
+ *     quadratic law).
+ *   Narrow phase: every candidate whose current boxes lie within
+ *     r_A + r_B + g0 + s of each other is evaluated by the contact element
+ *     (b2b_pair_eval's mathematics) on segments built once per update;
+ *     the rest are open ("far").
+ *   Ownership at joints is the element's rule, so a contact on a joint, or
+ *     where nodes of both beams coincide, is counted once.
+ *   Handover: a contact that was active at the last commit and whose point
+ *     now lies outside its pair (the element reports xi or eta outside
+ *     [-1, 1)) moves with its committed history to the neighbouring segment
+ *     of that beam (b2b_pair_history_handover on the committed geometry),
+ *     and on along both beams until a pair owns the point (at most
+ *     "max_handover_hops" hops; across a ring's seam too). A pair that held
+ *     its own committed contact keeps its own history.
+ *   The active contacts are listed in a fixed order (by pair), the same for
+ *   any number of threads, with outputs bit for bit the same.
+ * want_tangent = 0 skips the tangents (cheaper); get_contact then has none.
+ *
+ * Contacts (b2b_model_contact_count, b2b_model_get_contact; k = 0 .. count-1)
+ *   nodes[8]   host node numbers of A's four patch slots, then B's; -1 where
+ *              a slot holds no node (unused by the kind, or a missing node at a
+ *              beam end, whose reflected ghost is folded into the real nodes)
+ *   pair[4]    beam A, segment A, beam B, segment B (0-based)
+ *   info[32]   as b2b_pair_eval (B2B_INFO_*)
+ *   residual[24], tangent (24 x 24, leading dimension ldk >= 24): the
+ *              element arrays on the 24 coordinates of nodes[] (rows and
+ *              columns of -1 slots are zero). Any output may be NULL.
+ *
+ * Assembly (the translational dofs of the host's nodes)
+ *   eq: an int array eq[ldeq*k + i] (i = 0, 1, 2 for x, y, z of node k),
+ *   ldeq >= 3 (so an id(6, numnp) of a 6-dof beam code works as is): the
+ *   host's equation numbers, numbered from eq_base (0 for C style, 1 for
+ *   Fortran style); an entry below eq_base is a constrained dof and skipped.
+ *   n_eq: the number of equations (the length of f, the order of K); an
+ *   equation number beyond it is B2B_ERR_RANGE.
+ *   add_residual:        f[e - eq_base] += the contacts' residuals
+ *   add_tangent_dense:   K(e_r, e_c) += ..., K column-major, ldk >= n_eq
+ *   add_tangent_banded:  LAPACK general band storage as dgbsv wants it:
+ *                        K(i, j) goes to AB[kl + ku + i - j + ldab*j]
+ *                        (0-based), ldab >= 2 kl + ku + 1; an entry outside
+ *                        the band is B2B_ERR_RANGE (nothing added)
+ *   tangent_coo:         the nonzero entries (row, col, value) in the same
+ *                        numbering (duplicates are to be summed). With
+ *                        rows == NULL only *nnz is set (the size query);
+ *                        else capacity must be >= that count.
+ *
+ * Commit, revert, restart
+ *   commit: the state of the last update becomes the committed one (its
+ *     histories, its coordinates, the dissipation of the step added to the
+ *     total). revert: back to the last commit (a cut-back), as if the
+ *     updates since had never been made. save: the committed state into a
+ *     caller-owned byte buffer of b2b_model_save_size bytes; restore: into a
+ *     finalized model built with the same beams, groups and parameters
+ *     (B2B_ERR_RANGE for a truncated, corrupted or foreign buffer; the model
+ *     unchanged). A restored model continues bit for bit as the original.
+ *
+ * Stats (b2b_model_stats): counts[B2B_MODEL_COUNTS_LEN] (B2B_COUNT_*) and
+ * totals[B2B_MODEL_TOTALS_LEN] (B2B_TOTAL_*) of the last update; unused
+ * entries are zero.
+ *
+ * Threads: a model is not shared between host threads without a lock (one
+ * model per host thread, each with its own beams, is fine). Inside one model
+ * the update runs its narrow phase on "threads" OpenMP threads (when built
+ * with OpenMP). Other functions are thread-safe on distinct models.
+ *
+ * Bad input: B2B_ERR_NULL, B2B_ERR_STATE (wrong call order, a group pair
+ * without parameters for self-contact, no group pair at all at finalize, an
+ * unfinalized b2b_params), B2B_ERR_RANGE (a node number out of range or
+ * repeated within a beam, a radius <= 0 or beyond B2B_COORD_MAX, a group < 0,
+ * a coordinate beyond B2B_COORD_MAX, an equation number beyond n_eq, a
+ * restore buffer), B2B_ERR_NONFINITE (radius, coordinates, option values),
+ * B2B_ERR_SIZE (a beam of too few nodes, ldx < 3, n_cols < n_nodes, ldeq < 3,
+ * ldk, ldab, capacity, a replacement parameter set of another history
+ * length), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a
+ * segment's B2B_ERR_COINCIDENT / B2B_ERR_FOLDED. Messages name the beam,
+ * segment, host node or group.
+ */
+#ifndef B2B_MODEL_H
+#define B2B_MODEL_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct b2b_model b2b_model;
+
+/* Entries of counts[] of b2b_model_stats. Values are fixed. */
+enum {
+  B2B_COUNT_CANDIDATES = 0,     /* pairs from the broad phase */
+  B2B_COUNT_EVALUATED = 1,      /* pairs evaluated by the element (near pairs + handovers) */
+  B2B_COUNT_ACTIVE = 2,         /* active contacts */
+  B2B_COUNT_OPEN = 3,           /* evaluated, owned, no force */
+  B2B_COUNT_OUTSIDE = 4,        /* evaluated, point on another pair */
+  B2B_COUNT_PARALLEL = 5,
+  B2B_COUNT_NOT_CONVERGED = 6,
+  B2B_COUNT_NO_NORMAL = 7,
+  B2B_COUNT_FAR = 8,            /* candidates not evaluated: boxes apart */
+  B2B_COUNT_SEARCH_BUILDS = 9,  /* broad-phase builds since finalize */
+  B2B_COUNT_HANDOVERS = 10,     /* handover hops in the last update */
+  B2B_COUNT_LOST = 11,          /* committed contacts not found again (beam end, hops) */
+  B2B_COUNT_STICK = 12,         /* active contacts sticking */
+  B2B_COUNT_SLIP = 13           /* active contacts slipping */
+};
+#define B2B_MODEL_COUNTS_LEN 16
+
+/* Entries of totals[] of b2b_model_stats. Values are fixed. */
+enum {
+  B2B_TOTAL_ENERGY = 0,            /* contact potential of the active contacts */
+  B2B_TOTAL_DISSIPATION_STEP = 1,  /* frictional dissipation of the last update's step */
+  B2B_TOTAL_DISSIPATION = 2,       /* committed total + the step's */
+  B2B_TOTAL_NORMAL_FORCE = 3,      /* sum of f_N over the active contacts */
+  B2B_TOTAL_MIN_GAP = 4            /* smallest gap of the evaluated pairs (0 if none) */
+};
+#define B2B_MODEL_TOTALS_LEN 8
+
+B2B_EXPORT int b2b_model_create(b2b_model **model, char *errmsg, int errmsg_len);
+/* Frees the model and sets *model to NULL; NULL or *model == NULL is a no-op. */
+B2B_EXPORT int b2b_model_destroy(b2b_model **model);
+
+/* Adds a beam; *beam receives its index (0, 1, ...). */
+B2B_EXPORT int b2b_model_add_beam(b2b_model *model, const int *nodes, int n_nodes, int closed,
+                                  double radius, int kind, int group, int *beam, char *errmsg,
+                                  int errmsg_len);
+/* Groups ga and gb (either order) touch with this finalized parameter set. */
+B2B_EXPORT int b2b_model_set_group_pair(b2b_model *model, int ga, int gb,
+                                        const b2b_params *params, char *errmsg,
+                                        int errmsg_len);
+/* Self-contact of one beam: on (1) or off (0); exclusion_length < 0 for the
+ * default 4 r. Before finalize. */
+B2B_EXPORT int b2b_model_set_self_contact(b2b_model *model, int beam, int on,
+                                          double exclusion_length, char *errmsg, int errmsg_len);
+B2B_EXPORT int b2b_model_set_real(b2b_model *model, const char *key, double value, char *errmsg,
+                                  int errmsg_len);
+B2B_EXPORT int b2b_model_set_int(b2b_model *model, const char *key, int value, char *errmsg,
+                                 int errmsg_len);
+/* Builds segments, patches and neighbour tables; node numbers must be < n_nodes. */
+B2B_EXPORT int b2b_model_finalize(b2b_model *model, int n_nodes, char *errmsg, int errmsg_len);
+
+B2B_EXPORT int b2b_model_update(b2b_model *model, const double *x, int ldx, int n_cols,
+                                int want_tangent, char *errmsg, int errmsg_len);
+
+B2B_EXPORT int b2b_model_contact_count(const b2b_model *model, int *n, char *errmsg,
+                                       int errmsg_len);
+B2B_EXPORT int b2b_model_get_contact(const b2b_model *model, int k, int nodes[8], int pair[4],
+                                     double info[32], double residual[24], double *tangent,
+                                     int ldk, char *errmsg, int errmsg_len);
+
+B2B_EXPORT int b2b_model_add_residual(const b2b_model *model, const int *eq, int ldeq,
+                                      int eq_base, int n_eq, double *f, char *errmsg,
+                                      int errmsg_len);
+B2B_EXPORT int b2b_model_add_tangent_dense(const b2b_model *model, const int *eq, int ldeq,
+                                           int eq_base, int n_eq, double *K, int ldk,
+                                           char *errmsg, int errmsg_len);
+B2B_EXPORT int b2b_model_add_tangent_banded(const b2b_model *model, const int *eq, int ldeq,
+                                            int eq_base, int n_eq, int kl, int ku, double *AB,
+                                            int ldab, char *errmsg, int errmsg_len);
+B2B_EXPORT int b2b_model_tangent_coo(const b2b_model *model, const int *eq, int ldeq,
+                                     int eq_base, int n_eq, int *nnz, int *rows, int *cols,
+                                     double *values, int capacity, char *errmsg,
+                                     int errmsg_len);
+
+B2B_EXPORT int b2b_model_commit(b2b_model *model, char *errmsg, int errmsg_len);
+B2B_EXPORT int b2b_model_revert(b2b_model *model, char *errmsg, int errmsg_len);
+
+/* Bytes b2b_model_save needs for the committed state now (int64: may exceed 2^31). */
+B2B_EXPORT int b2b_model_save_size(const b2b_model *model, int64_t *size, char *errmsg,
+                                   int errmsg_len);
+B2B_EXPORT int b2b_model_save(const b2b_model *model, void *buffer, int64_t size, char *errmsg,
+                              int errmsg_len);
+B2B_EXPORT int b2b_model_restore(b2b_model *model, const void *buffer, int64_t size,
+                                 char *errmsg, int errmsg_len);
+
+B2B_EXPORT int b2b_model_stats(const b2b_model *model, int counts[16], double totals[8],
+                               char *errmsg, int errmsg_len);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* B2B_MODEL_H */

@@ -1,0 +1,414 @@
+// C entry points of the contact model: set-up, update, contacts, commit,
+// revert, restart, stats. Argument checks and messages only; the model layer
+// (src/model) does the work.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include <b2b/b2b.h>
+
+#include "../curve/topology.hpp"
+#include "../pair/history.hpp"
+#include "model_handle.hpp"
+#include "params_handle.hpp"
+#include "segment_checks.hpp"
+
+using b2b::capi::check_finalized;
+using b2b::capi::check_kind;
+using b2b::capi::check_model_finalized;
+using b2b::capi::guarded;
+using b2b::capi::report_model_problem;
+using b2b::capi::Reporter;
+namespace md = b2b::model;
+
+namespace b2b {
+namespace capi {
+
+int check_model_finalized(const Reporter& r, const b2b_model* model) {
+  if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
+  if (!model->m.finalized())
+    return r.fail(B2B_ERR_STATE, "the model is not finalized (call b2b_model_finalize first)");
+  return B2B_OK;
+}
+
+int report_model_problem(const Reporter& r, const b2b_model* model, const md::Problem& pb) {
+  using W = md::Problem::What;
+  const int o = model->message_base;
+  const char kAxis[] = "xyz";
+  switch (pb.what) {
+    case W::NoGroupPair:
+      return r.fail(pb.status, "no pair of groups interacts: call b2b_model_set_group_pair first");
+    case W::NodeRange:
+      return r.fail(pb.status, "beam %d: node %d (position %d in its list) is out of range: the "
+                    "host has nodes %d .. %d", pb.beam + o, pb.node + o, pb.segment + o, o,
+                    model->m.n_nodes() - 1 + o);
+    case W::SelfNoGroupPair:
+      return r.fail(pb.status, "beam %d has self-contact but its group %d is not paired with "
+                    "itself: call b2b_model_set_group_pair(%d, %d, ...)", pb.beam + o, pb.node,
+                    pb.node, pb.node);
+    case W::Coordinate:
+      return r.fail(pb.status, "node %d has %s %c coordinate (%g)", pb.node + o,
+                    pb.status == B2B_ERR_NONFINITE ? "a non-finite" : "beyond B2B_COORD_MAX an",
+                    kAxis[pb.axis], pb.value);
+    case W::Segment: {
+      const md::SegmentInfo& s =
+          model->m.table().segment(model->m.beam(pb.beam).first_segment + pb.segment);
+      if (pb.status == B2B_ERR_COINCIDENT)
+        return r.fail(pb.status, "beam %d, segment %d: nodes %d and %d coincide (zero-length "
+                      "element)", pb.beam + o, pb.segment + o, s.nodes[pb.slot_a] + o,
+                      s.nodes[pb.slot_b] + o);
+      return r.fail(pb.status, "beam %d, segment %d: the beam folds back on itself at node %d "
+                    "(nodes %d and %d on both sides of it coincide), so its tangent has no "
+                    "direction", pb.beam + o, pb.segment + o, s.nodes[pb.slot_a + 1] + o,
+                    s.nodes[pb.slot_a] + o, s.nodes[pb.slot_b] + o);
+    }
+    case W::Overflow:
+      return r.fail(pb.status, "the contact of beam %d segment %d with beam %d segment %d "
+                    "overflows (penalty %g): reduce the penalty or the penetration",
+                    pb.beam + o, pb.segment + o, pb.other_beam + o, pb.other_segment + o,
+                    pb.value);
+    case W::Buffer:
+      return r.fail(pb.status, "the restart buffer is not accepted: %s", pb.detail);
+    case W::Equation:
+      return r.fail(pb.status, "the equation number of node %d, %c (%g) is beyond n_eq",
+                    pb.node + o, kAxis[pb.axis], pb.value);
+    case W::Band:
+      return r.fail(pb.status, "a contact couples equations %d and %d, outside the band (kl, "
+                    "ku): widen the band", pb.row, pb.col);
+    case W::None:
+    case W::NodeRepeated:
+      break;
+  }
+  return r.fail(B2B_ERR_INTERNAL, "unclassified model problem (status %d)", pb.status);
+}
+
+}  // namespace capi
+}  // namespace b2b
+
+namespace {
+
+int check_setup(const Reporter& r, const b2b_model* model) {
+  if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
+  if (model->m.finalized())
+    return r.fail(B2B_ERR_STATE, "the model is finalized: beams and self-contact are set before "
+                  "b2b_model_finalize");
+  return B2B_OK;
+}
+
+int check_results(const Reporter& r, const b2b_model* model) {
+  if (int st = check_model_finalized(r, model)) return st;
+  if (!model->m.has_results())
+    return r.fail(B2B_ERR_STATE, "no update since the model was finalized, reverted or "
+                  "restored (call b2b_model_update first)");
+  return B2B_OK;
+}
+
+bool is(const char* key, const char* name) { return std::strcmp(key, name) == 0; }
+
+}  // namespace
+
+extern "C" {
+
+int b2b_model_create(b2b_model** model, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_create", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
+    *model = new b2b_model();
+    return B2B_OK;
+  });
+}
+
+int b2b_model_destroy(b2b_model** model) {
+  if (model == nullptr) return B2B_OK;
+  delete *model;
+  *model = nullptr;
+  return B2B_OK;
+}
+
+int b2b_model_add_beam(b2b_model* model, const int* nodes, int n_nodes, int closed, double radius,
+                       int kind, int group, int* beam, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_add_beam", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_setup(r, model)) return st;
+    if (nodes == nullptr) return r.fail(B2B_ERR_NULL, "nodes is NULL");
+    if (beam == nullptr) return r.fail(B2B_ERR_NULL, "beam is NULL");
+    const int o = model->message_base;
+    const int b = model->m.beam_count();
+    if (closed != 0 && closed != 1)
+      return r.fail(B2B_ERR_RANGE, "beam %d: closed is %d (0 open, 1 ring)", b + o, closed);
+    if (int st = check_kind(r, kind)) return st;
+    const int min_nodes = b2b::curve::min_nodes(closed);
+    if (n_nodes < min_nodes)
+      return r.fail(B2B_ERR_SIZE, "beam %d has %d nodes; an %s beam needs at least %d", b + o,
+                    n_nodes, closed ? "closed" : "open", min_nodes);
+    if (!std::isfinite(radius))
+      return r.fail(B2B_ERR_NONFINITE, "beam %d: the radius is not finite (%g)", b + o, radius);
+    if (!(radius > 0.0) || radius > B2B_COORD_MAX)
+      return r.fail(B2B_ERR_RANGE, "beam %d: the radius %g must be > 0 (and <= B2B_COORD_MAX)",
+                    b + o, radius);
+    if (group < 0) return r.fail(B2B_ERR_RANGE, "beam %d: group %d must be >= 0", b + o, group);
+    std::vector<std::pair<int, int>> sorted(n_nodes);
+    for (int k = 0; k < n_nodes; ++k) {
+      if (nodes[k] < 0)
+        return r.fail(B2B_ERR_RANGE, "beam %d: node %d at position %d is negative (nodes are "
+                      "numbered from %d)", b + o, nodes[k] + o, k + o, o);
+      sorted[k] = {nodes[k], k};
+    }
+    std::sort(sorted.begin(), sorted.end());
+    for (int k = 1; k < n_nodes; ++k)
+      if (sorted[k].first == sorted[k - 1].first)
+        return r.fail(B2B_ERR_RANGE, "beam %d: node %d appears twice (positions %d and %d)%s",
+                      b + o, sorted[k].first + o, sorted[k - 1].second + o, sorted[k].second + o,
+                      closed ? "; a closed beam joins its last node to the first by itself" : "");
+    md::Beam bm;
+    bm.nodes.assign(nodes, nodes + n_nodes);
+    bm.closed = closed == 1;
+    bm.radius = radius;
+    bm.kind = kind;
+    bm.group = group;
+    *beam = model->m.add_beam(std::move(bm));
+    return B2B_OK;
+  });
+}
+
+int b2b_model_set_group_pair(b2b_model* model, int ga, int gb, const b2b_params* params,
+                             char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_set_group_pair", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
+    if (int st = check_finalized(r, params)) return st;
+    if (ga < 0 || gb < 0)
+      return r.fail(B2B_ERR_RANGE, "groups %d and %d: groups are >= 0", ga, gb);
+    md::Model& m = model->m;
+    if (m.finalized()) {
+      const md::GroupPair* g = m.group_pair(ga, gb);
+      if (!g)
+        return r.fail(B2B_ERR_STATE, "the model is finalized: only a pair of groups set before "
+                      "can be given new parameters, and (%d, %d) was not", ga, gb);
+      if (m.updated())
+        return r.fail(B2B_ERR_STATE, "groups (%d, %d): parameters are replaced between steps "
+                      "only (after b2b_model_commit or _revert), not after an update", ga, gb);
+      const int len = b2b::pair::history_length(params->p);
+      if (len != g->hist_len)
+        return r.fail(B2B_ERR_SIZE, "groups (%d, %d): the new parameter set keeps %d doubles "
+                      "per pair, the one it replaces %d (friction on one and off in the other?)",
+                      ga, gb, len, g->hist_len);
+    }
+    m.set_group_pair(ga, gb, params->p);
+    return B2B_OK;
+  });
+}
+
+int b2b_model_set_self_contact(b2b_model* model, int beam, int on, double exclusion_length,
+                               char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_set_self_contact", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_setup(r, model)) return st;
+    const int o = model->message_base;
+    if (beam < 0 || beam >= model->m.beam_count())
+      return r.fail(B2B_ERR_RANGE, "beam %d does not exist (beams %d .. %d)", beam + o, o,
+                    model->m.beam_count() - 1 + o);
+    if (on != 0 && on != 1) return r.fail(B2B_ERR_RANGE, "on is %d (0 or 1)", on);
+    if (!std::isfinite(exclusion_length))
+      return r.fail(B2B_ERR_NONFINITE, "exclusion_length is not finite (%g)", exclusion_length);
+    md::Beam& b = model->m.beam(beam);
+    b.self_contact = on == 1;
+    b.exclusion = exclusion_length < 0.0 ? -1.0 : exclusion_length;
+    return B2B_OK;
+  });
+}
+
+int b2b_model_set_real(b2b_model* model, const char* key, double value, char* errmsg,
+                       int errmsg_len) {
+  const Reporter r("b2b_model_set_real", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
+    if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
+    if (!is(key, "search_margin"))
+      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%.64s\" (real keys: "
+                    "\"search_margin\")", key);
+    if (!std::isfinite(value))
+      return r.fail(B2B_ERR_NONFINITE, "\"search_margin\" = %g is not finite", value);
+    if (!(value > 0.0) || value > B2B_COORD_MAX)
+      return r.fail(B2B_ERR_RANGE, "\"search_margin\" = %g must be > 0", value);
+    model->m.search_margin = value;
+    return B2B_OK;
+  });
+}
+
+int b2b_model_set_int(b2b_model* model, const char* key, int value, char* errmsg,
+                      int errmsg_len) {
+  const Reporter r("b2b_model_set_int", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
+    if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
+    if (is(key, "threads")) {
+      if (value < 0) return r.fail(B2B_ERR_RANGE, "\"threads\" = %d must be >= 0", value);
+      model->m.threads = value;
+    } else if (is(key, "max_handover_hops")) {
+      if (value < 1 || value > 1000)
+        return r.fail(B2B_ERR_RANGE, "\"max_handover_hops\" = %d must be in 1 .. 1000", value);
+      model->m.max_hops = value;
+    } else if (is(key, "message_base")) {
+      if (value != 0 && value != 1)
+        return r.fail(B2B_ERR_RANGE, "\"message_base\" = %d must be 0 or 1", value);
+      model->message_base = value;
+    } else {
+      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%.64s\" (integer keys: "
+                    "\"threads\", \"max_handover_hops\", \"message_base\")", key);
+    }
+    return B2B_OK;
+  });
+}
+
+int b2b_model_finalize(b2b_model* model, int n_nodes, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_finalize", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_setup(r, model)) return st;
+    if (n_nodes < 1) return r.fail(B2B_ERR_RANGE, "n_nodes is %d (>= 1)", n_nodes);
+    if (model->m.beam_count() == 0)
+      return r.fail(B2B_ERR_STATE, "the model has no beams (b2b_model_add_beam)");
+    const md::Problem pb = model->m.finalize(n_nodes);
+    if (pb.status) return report_model_problem(r, model, pb);
+    return B2B_OK;
+  });
+}
+
+int b2b_model_update(b2b_model* model, const double* x, int ldx, int n_cols, int want_tangent,
+                     char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_update", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_model_finalized(r, model)) return st;
+    if (x == nullptr) return r.fail(B2B_ERR_NULL, "x is NULL");
+    if (ldx < 3) return r.fail(B2B_ERR_SIZE, "ldx is %d (>= 3)", ldx);
+    if (n_cols < model->m.n_nodes())
+      return r.fail(B2B_ERR_SIZE, "x has %d columns (nodes) but the model has %d nodes", n_cols,
+                    model->m.n_nodes());
+    if (want_tangent != 0 && want_tangent != 1)
+      return r.fail(B2B_ERR_RANGE, "want_tangent is %d (0 or 1)", want_tangent);
+    const md::Problem pb = model->m.update(x, ldx, want_tangent == 1);
+    if (pb.status) return report_model_problem(r, model, pb);
+    return B2B_OK;
+  });
+}
+
+int b2b_model_contact_count(const b2b_model* model, int* n, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_contact_count", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (n == nullptr) return r.fail(B2B_ERR_NULL, "n is NULL");
+    if (int st = check_results(r, model)) return st;
+    *n = static_cast<int>(model->m.contacts().size());
+    return B2B_OK;
+  });
+}
+
+int b2b_model_get_contact(const b2b_model* model, int k, int* nodes, int* pair, double* info,
+                          double* residual, double* tangent, int ldk, char* errmsg,
+                          int errmsg_len) {
+  const Reporter r("b2b_model_get_contact", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_results(r, model)) return st;
+    const md::Model& m = model->m;
+    const int n = static_cast<int>(m.contacts().size());
+    const int o = model->message_base;
+    if (k < 0 || k >= n)
+      return r.fail(B2B_ERR_RANGE, "contact %d does not exist (%d active contacts%s)", k + o, n,
+                    n ? "" : ": none");
+    if (tangent != nullptr && !m.has_tangents())
+      return r.fail(B2B_ERR_STATE, "the last update was made without tangents (want_tangent 0)");
+    if (tangent != nullptr && ldk < 24)
+      return r.fail(B2B_ERR_SIZE, "ldk is %d, the tangent needs at least 24", ldk);
+    const md::Contact& c = m.contacts()[k];
+    if (nodes) std::memcpy(nodes, c.nodes, sizeof c.nodes);
+    if (pair) {
+      const md::SegmentInfo &a = m.table().segment(c.a), &b = m.table().segment(c.b);
+      pair[0] = a.beam;
+      pair[1] = a.index;
+      pair[2] = b.beam;
+      pair[3] = b.index;
+    }
+    if (info) std::memcpy(info, c.info, sizeof c.info);
+    if (residual) std::memcpy(residual, c.residual, sizeof c.residual);
+    if (tangent) {
+      const double* K = m.tangent(c);
+      for (int col = 0; col < 24; ++col)
+        std::memcpy(tangent + static_cast<size_t>(ldk) * col, K + 24 * col, 24 * sizeof(double));
+    }
+    return B2B_OK;
+  });
+}
+
+int b2b_model_commit(b2b_model* model, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_commit", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_model_finalized(r, model)) return st;
+    if (!model->m.updated())
+      return r.fail(B2B_ERR_STATE, "nothing to commit: no update since the last commit, revert "
+                    "or restore");
+    model->m.commit();
+    return B2B_OK;
+  });
+}
+
+int b2b_model_revert(b2b_model* model, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_revert", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_model_finalized(r, model)) return st;
+    model->m.revert();
+    return B2B_OK;
+  });
+}
+
+int b2b_model_save_size(const b2b_model* model, int64_t* size, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_save_size", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (size == nullptr) return r.fail(B2B_ERR_NULL, "size is NULL");
+    if (int st = check_model_finalized(r, model)) return st;
+    *size = model->m.save_size();
+    return B2B_OK;
+  });
+}
+
+int b2b_model_save(const b2b_model* model, void* buffer, int64_t size, char* errmsg,
+                   int errmsg_len) {
+  const Reporter r("b2b_model_save", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (buffer == nullptr) return r.fail(B2B_ERR_NULL, "buffer is NULL");
+    if (int st = check_model_finalized(r, model)) return st;
+    const int64_t need = model->m.save_size();
+    if (size < need)
+      return r.fail(B2B_ERR_SIZE, "the buffer has %lld bytes, the state needs %lld "
+                    "(b2b_model_save_size)", static_cast<long long>(size),
+                    static_cast<long long>(need));
+    model->m.save(static_cast<unsigned char*>(buffer));
+    return B2B_OK;
+  });
+}
+
+int b2b_model_restore(b2b_model* model, const void* buffer, int64_t size, char* errmsg,
+                      int errmsg_len) {
+  const Reporter r("b2b_model_restore", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (buffer == nullptr) return r.fail(B2B_ERR_NULL, "buffer is NULL");
+    if (int st = check_model_finalized(r, model)) return st;
+    if (size < 0) return r.fail(B2B_ERR_SIZE, "size is %lld", static_cast<long long>(size));
+    const md::Problem pb =
+        model->m.restore(static_cast<const unsigned char*>(buffer), size);
+    if (pb.status) return report_model_problem(r, model, pb);
+    return B2B_OK;
+  });
+}
+
+int b2b_model_stats(const b2b_model* model, int* counts, double* totals, char* errmsg,
+                    int errmsg_len) {
+  const Reporter r("b2b_model_stats", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_model_finalized(r, model)) return st;
+    if (counts) std::memcpy(counts, model->m.counts(), B2B_MODEL_COUNTS_LEN * sizeof(int));
+    if (totals) std::memcpy(totals, model->m.totals(), B2B_MODEL_TOTALS_LEN * sizeof(double));
+    return B2B_OK;
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,105 @@
+#include "assembly.hpp"
+
+#include <cstdlib>
+
+#include <b2b/b2b.h>
+
+namespace b2b {
+namespace model {
+namespace {
+
+// The equation (0-based, or -1 if constrained) of each of the 24 dofs of a
+// contact, -1 also for slots without a node.
+void dof_equations(const Contact& c, const EqMap& map, int e[24]) {
+  for (int s = 0; s < 8; ++s)
+    for (int i = 0; i < 3; ++i) {
+      const int node = c.nodes[s];
+      const int v = node < 0 ? map.base - 1 : map.eq[static_cast<size_t>(map.ldeq) * node + i];
+      e[3 * s + i] = v < map.base ? -1 : v - map.base;
+    }
+}
+
+template <class Visit>
+void for_each_entry(const Model& m, const EqMap& map, Visit visit) {
+  int e[24];
+  for (const Contact& c : m.contacts()) {
+    dof_equations(c, map, e);
+    const double* K = m.tangent(c);
+    for (int col = 0; col < 24; ++col) {
+      if (e[col] < 0) continue;
+      for (int row = 0; row < 24; ++row)
+        if (e[row] >= 0) visit(e[row], e[col], K[row + 24 * col]);
+    }
+  }
+}
+
+}  // namespace
+
+Problem check_equations(const Model& m, const EqMap& map, int kl, int ku) {
+  Problem pb;
+  int e[24];
+  for (const Contact& c : m.contacts()) {
+    for (int s = 0; s < 8; ++s)
+      for (int i = 0; i < 3 && c.nodes[s] >= 0; ++i) {
+        const int v = map.eq[static_cast<size_t>(map.ldeq) * c.nodes[s] + i];
+        if (v >= map.base && v - map.base >= map.n_eq) {
+          pb.status = B2B_ERR_RANGE;
+          pb.what = Problem::What::Equation;
+          pb.node = c.nodes[s];
+          pb.axis = i;
+          pb.value = v;
+          return pb;
+        }
+      }
+    if (kl < 0) continue;
+    dof_equations(c, map, e);
+    for (int col = 0; col < 24; ++col)
+      for (int row = 0; row < 24 && e[col] >= 0; ++row)
+        if (e[row] >= 0 && (e[row] - e[col] > kl || e[col] - e[row] > ku)) {
+          pb.status = B2B_ERR_RANGE;
+          pb.what = Problem::What::Band;
+          pb.row = e[row] + map.base;
+          pb.col = e[col] + map.base;
+          return pb;
+        }
+  }
+  return pb;
+}
+
+void add_residual(const Model& m, const EqMap& map, double* f) {
+  int e[24];
+  for (const Contact& c : m.contacts()) {
+    dof_equations(c, map, e);
+    for (int k = 0; k < 24; ++k)
+      if (e[k] >= 0) f[e[k]] += c.residual[k];
+  }
+}
+
+void add_tangent_dense(const Model& m, const EqMap& map, double* K, int ldk) {
+  for_each_entry(m, map, [K, ldk](int r, int c, double v) { K[r + static_cast<size_t>(ldk) * c] += v; });
+}
+
+void add_tangent_banded(const Model& m, const EqMap& map, int kl, int ku, double* AB, int ldab) {
+  for_each_entry(m, map, [=](int r, int c, double v) {
+    AB[kl + ku + r - c + static_cast<size_t>(ldab) * c] += v;
+  });
+}
+
+int64_t coo_count(const Model& m, const EqMap& map) {
+  int64_t n = 0;
+  for_each_entry(m, map, [&n](int, int, double) { ++n; });
+  return n;
+}
+
+void coo_fill(const Model& m, const EqMap& map, int* rows, int* cols, double* values) {
+  int64_t k = 0;
+  for_each_entry(m, map, [&](int r, int c, double v) {
+    rows[k] = r + map.base;
+    cols[k] = c + map.base;
+    values[k] = v;
+    ++k;
+  });
+}
+
+}  // namespace model
+}  // namespace b2b

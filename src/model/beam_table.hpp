@@ -1,0 +1,68 @@
+// The model's beams as segments: for every segment its beam, its patch of
+// host nodes (slots x1..x4, -1 where missing or unused), end rules, kind,
+// radius and group; the neighbouring segments along its beam; and the rules
+// that exclude a pair before any geometry is looked at (shared host nodes,
+// self-contact).
+#pragma once
+
+#include <vector>
+
+namespace b2b {
+namespace model {
+
+struct Beam {
+  std::vector<int> nodes;  // host node numbers, 0-based
+  bool closed = false;
+  double radius = 0.0;
+  int kind = 0;
+  int group = 0;           // the host's group number
+  bool self_contact = false;
+  double exclusion = -1.0;  // self-contact exclusion length (< 0: default 4 r)
+  // set by BeamTable::build
+  int first_segment = 0, n_segments = 0;
+};
+
+struct SegmentInfo {
+  int beam = 0, index = 0;        // beam and segment within it
+  int nodes[4] = {-1, -1, -1, -1};  // host nodes of the patch slots
+  int start_rule = 0, end_rule = 0;
+  int kind = 0;
+  int group = 0;                  // dense group index (0 .. n_groups - 1)
+  double radius = 0.0;
+};
+
+class BeamTable {
+ public:
+  // Builds the segment table of beams (valid: checked before). groups: the
+  // dense index of each beam's group.
+  void build(std::vector<Beam>& beams, const std::vector<int>& dense_group);
+
+  int segment_count() const { return static_cast<int>(segs_.size()); }
+  const SegmentInfo& segment(int s) const { return segs_[s]; }
+  // The segment after (direction +1) or before (-1) s on its beam, across a
+  // ring's seam; -1 at an open beam's end.
+  int neighbour(int s, int direction) const;
+  // Whether two segments' patches share a host node.
+  bool share_node(int a, int b) const;
+  // Self-contact: the arc spans of the segments of beam b along its chords,
+  // from coordinates x of the host nodes (node k at x[3*used(k)]).
+  void measure_arcs(const std::vector<Beam>& beams, const double* coords,
+                    const std::vector<int>& used_index);
+  bool arcs_measured() const { return !arc_lo_.empty(); }
+  // Arc length between two segments of one beam (0 if they overlap).
+  double arc_gap(const Beam& beam, int a, int b) const;
+  // The per-segment arc spans, for a restart file (and set_arcs to restore them).
+  const std::vector<double>& arc_lo() const { return arc_lo_; }
+  const std::vector<double>& arc_hi() const { return arc_hi_; }
+  const std::vector<double>& arc_total() const { return arc_total_; }
+  void set_arcs(std::vector<double> lo, std::vector<double> hi, std::vector<double> total);
+
+ private:
+  std::vector<SegmentInfo> segs_;
+  std::vector<int> first_, count_;  // per beam
+  std::vector<bool> closed_;
+  std::vector<double> arc_lo_, arc_hi_, arc_total_;  // per segment, per beam
+};
+
+}  // namespace model
+}  // namespace b2b

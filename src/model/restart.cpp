@@ -1,0 +1,220 @@
+// Restart: the committed state of a model as bytes, and back.
+//
+// Layout (native byte order and doubles; a restart file is for the same
+// platform): "B2BMODL1", total size, format version, model fingerprint (a
+// hash of the beams, groups, self-contact settings and history lengths, so a
+// buffer is only accepted by a model built the same way), the committed
+// coordinates of the beams' nodes, the self-contact arc spans, the total
+// dissipation, the committed pairs with their histories, and an FNV-1a
+// checksum of everything before it. Everything else a model holds is either
+// set up by the host again or recomputed at the next update (the search);
+// neither changes the results, so a restored model continues bit for bit.
+#include <cstring>
+
+#include <b2b/b2b.h>
+
+#include "../pair/history_check.hpp"
+#include "model.hpp"
+
+namespace b2b {
+namespace model {
+namespace {
+
+constexpr char kMagic[8] = {'B', '2', 'B', 'M', 'O', 'D', 'L', '1'};
+constexpr uint64_t kVersion = 1;
+
+uint64_t fnv1a(const unsigned char* p, size_t n, uint64_t h = 1469598103934665603ULL) {
+  for (size_t i = 0; i < n; ++i) {
+    h ^= p[i];
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+class Writer {
+ public:
+  explicit Writer(unsigned char* out) : out_(out) {}
+  void bytes(const void* p, size_t n) {
+    if (out_) std::memcpy(out_ + size_, p, n);
+    size_ += n;
+  }
+  void u64(uint64_t v) { bytes(&v, 8); }
+  void f64(double v) { bytes(&v, 8); }
+  void doubles(const std::vector<double>& v) {
+    u64(v.size());
+    if (!v.empty()) bytes(v.data(), 8 * v.size());
+  }
+  size_t size() const { return size_; }
+
+ private:
+  unsigned char* out_;
+  size_t size_ = 0;
+};
+
+class Reader {
+ public:
+  Reader(const unsigned char* p, size_t n) : p_(p), n_(n) {}
+  bool bytes(void* out, size_t n) {
+    if (n > n_ - pos_) return false;
+    std::memcpy(out, p_ + pos_, n);
+    pos_ += n;
+    return true;
+  }
+  bool u64(uint64_t& v) { return bytes(&v, 8); }
+  bool f64(double& v) { return bytes(&v, 8); }
+  bool doubles(std::vector<double>& v, uint64_t max) {
+    uint64_t n;
+    if (!u64(n) || n > max || n > (n_ - pos_) / 8) return false;
+    v.resize(n);
+    return n == 0 || bytes(v.data(), 8 * n);
+  }
+
+ private:
+  const unsigned char* p_;
+  size_t n_, pos_ = 0;
+};
+
+}  // namespace
+
+struct RestartCodec {
+  static void write(const Model& m, Writer& w) {
+    w.bytes(kMagic, 8);
+    w.u64(0);  // total size, patched by the caller
+    w.u64(kVersion);
+    w.u64(m.fingerprint());
+    w.doubles(m.committed_coords_);
+    w.doubles(m.table_.arc_lo());
+    w.doubles(m.table_.arc_hi());
+    w.doubles(m.table_.arc_total());
+    w.f64(m.committed_.dissipation);
+    w.u64(m.committed_.pairs.size());
+    for (const StoredPair& p : m.committed_.pairs) {
+      w.u64(p.key);
+      w.u64(static_cast<uint64_t>(p.a));
+      w.u64(static_cast<uint64_t>(p.b));
+      w.u64(static_cast<uint64_t>(p.status));
+      w.u64(static_cast<uint64_t>(p.group_pair));
+      w.u64(static_cast<uint64_t>(p.length));
+      w.bytes(m.committed_.history(p), 8 * static_cast<size_t>(p.length));
+    }
+  }
+
+  static Problem fail(const char* detail) {
+    Problem pb;
+    pb.status = B2B_ERR_RANGE;
+    pb.what = Problem::What::Buffer;
+    pb.detail = detail;
+    return pb;
+  }
+
+  static Problem read(Model& m, const unsigned char* buf, int64_t size) {
+    if (size < 40) return fail("it is truncated (shorter than the header)");
+    if (std::memcmp(buf, kMagic, 8) != 0) return fail("it is not a b2b model restart buffer");
+    uint64_t total, version, fingerprint;
+    std::memcpy(&total, buf + 8, 8);
+    std::memcpy(&version, buf + 16, 8);
+    std::memcpy(&fingerprint, buf + 24, 8);
+    if (version != kVersion) return fail("it has an unknown format version");
+    if (static_cast<uint64_t>(size) < total) return fail("it is truncated");
+    if (total < 40) return fail("it is corrupted (bad size)");
+    uint64_t sum;
+    std::memcpy(&sum, buf + total - 8, 8);
+    if (fnv1a(buf, total - 8) != sum) return fail("it is corrupted (checksum)");
+    if (fingerprint != m.fingerprint())
+      return fail("it is from another model (other beams, groups or history lengths)");
+
+    Reader r(buf + 32, total - 40);
+    const uint64_t n_seg = static_cast<uint64_t>(m.table_.segment_count());
+    std::vector<double> coords, lo, hi, arc_total;
+    ContactState st;
+    uint64_t n_pairs;
+    if (!r.doubles(coords, 3 * m.used_nodes_.size()) || !r.doubles(lo, n_seg) ||
+        !r.doubles(hi, n_seg) || !r.doubles(arc_total, m.beams_.size()) ||
+        !r.f64(st.dissipation) || !r.u64(n_pairs))
+      return fail("it is corrupted (inconsistent sizes)");
+    if (!coords.empty() && coords.size() != 3 * m.used_nodes_.size())
+      return fail("it is corrupted (coordinates)");
+    if (!(lo.size() == hi.size() && (lo.empty() ? arc_total.empty()
+                                                : lo.size() == n_seg &&
+                                                      arc_total.size() == m.beams_.size())))
+      return fail("it is corrupted (arc lengths)");
+    if (coords.empty() && n_pairs > 0) return fail("it is corrupted (pairs without coordinates)");
+    uint64_t last_key = 0;
+    for (uint64_t k = 0; k < n_pairs; ++k) {
+      uint64_t key, a, b, status, gp, len;
+      if (!r.u64(key) || !r.u64(a) || !r.u64(b) || !r.u64(status) || !r.u64(gp) || !r.u64(len))
+        return fail("it is corrupted (pair list)");
+      if (a >= n_seg || b >= n_seg || key != pair_key(static_cast<int>(a), static_cast<int>(b)) ||
+          (k > 0 && key <= last_key))
+        return fail("it is corrupted (pair keys)");
+      last_key = key;
+      if (status != B2B_CONTACT_ACTIVE && status != B2B_CONTACT_OPEN)
+        return fail("it is corrupted (pair status)");
+      if (static_cast<int64_t>(gp) != m.group_pair_index(static_cast<int>(a), static_cast<int>(b)))
+        return fail("it is corrupted (group pair)");
+      const GroupPair& g = m.group_pairs_[gp];
+      if (len != static_cast<uint64_t>(g.hist_len)) return fail("it is corrupted (history length)");
+      const size_t offset = st.hist.size();
+      st.hist.resize(offset + len);
+      if (!r.bytes(st.hist.data() + offset, 8 * len)) return fail("it is corrupted (histories)");
+      if (pair::check_history(g.params, st.hist.data() + offset, static_cast<int>(len)).problem !=
+          pair::HistoryProblem::None)
+        return fail("it holds a pair history b2b could not have written");
+      st.pairs.push_back(StoredPair{key, static_cast<int>(a), static_cast<int>(b),
+                                    static_cast<int>(status), static_cast<int>(gp), offset,
+                                    static_cast<int>(len)});
+    }
+    // Accepted: replace the committed state; the rest starts afresh.
+    m.committed_ = std::move(st);
+    m.committed_coords_ = std::move(coords);
+    m.table_.set_arcs(std::move(lo), std::move(hi), std::move(arc_total));
+    m.trial_ = ContactState();
+    m.updated_ = false;
+    m.has_results_ = false;
+    m.contacts_.clear();
+    m.tangents_.clear();
+    return Problem();
+  }
+};
+
+uint64_t Model::fingerprint() const {
+  uint64_t h = 1469598103934665603ULL;
+  auto mix = [&h](const void* p, size_t n) { h = fnv1a(static_cast<const unsigned char*>(p), n, h); };
+  mix(&n_nodes_, sizeof n_nodes_);
+  for (const Beam& b : beams_) {
+    const size_t n = b.nodes.size();
+    mix(&n, sizeof n);
+    mix(b.nodes.data(), n * sizeof(int));
+    const int flags[4] = {b.closed, b.kind, b.group, b.self_contact};
+    mix(flags, sizeof flags);
+    mix(&b.radius, sizeof b.radius);
+    mix(&b.exclusion, sizeof b.exclusion);
+  }
+  for (const GroupPair& g : group_pairs_) {
+    const int v[3] = {g.ga, g.gb, g.hist_len};
+    mix(v, sizeof v);
+  }
+  return h;
+}
+
+int64_t Model::save_size() const {
+  Writer w(nullptr);
+  RestartCodec::write(*this, w);
+  return static_cast<int64_t>(w.size() + 8);
+}
+
+void Model::save(unsigned char* buffer) const {
+  Writer w(buffer);
+  RestartCodec::write(*this, w);
+  const uint64_t total = w.size() + 8;
+  std::memcpy(buffer + 8, &total, 8);
+  const uint64_t sum = fnv1a(buffer, w.size());
+  std::memcpy(buffer + w.size(), &sum, 8);
+}
+
+Problem Model::restore(const unsigned char* buffer, int64_t size) {
+  return RestartCodec::read(*this, buffer, size);
+}
+
+}  // namespace model
+}  // namespace b2b

@@ -1,0 +1,102 @@
+#include "search.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace b2b {
+namespace model {
+namespace {
+
+constexpr int kLeafSize = 4;
+
+// 21 bits of v spread to every third bit of a 63-bit code.
+uint64_t spread_bits(uint64_t v) {
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffULL;
+  v = (v | v << 16) & 0x1f0000ff0000ffULL;
+  v = (v | v << 8) & 0x100f00f00f00f00fULL;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+  v = (v | v << 2) & 0x1249249249249249ULL;
+  return v;
+}
+
+void grow(Box& into, const Box& b) {
+  for (int i = 0; i < 3; ++i) {
+    into.lo[i] = std::min(into.lo[i], b.lo[i]);
+    into.hi[i] = std::max(into.hi[i], b.hi[i]);
+  }
+}
+
+}  // namespace
+
+bool boxes_overlap(const Box& a, const Box& b) {
+  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+         a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+}
+
+double box_distance(const Box& a, const Box& b) {
+  double d = 0.0;
+  for (int i = 0; i < 3; ++i) d = std::max(d, std::max(a.lo[i] - b.hi[i], b.lo[i] - a.hi[i]));
+  return d;
+}
+
+void BoxTree::build(const std::vector<Box>& boxes) {
+  boxes_ = &boxes;
+  const int n = static_cast<int>(boxes.size());
+  order_.resize(n);
+  nodes_.clear();
+  if (n == 0) return;
+  // Morton codes of the centres, in the centres' own bounding box.
+  double lo[3], hi[3];
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = HUGE_VAL;
+    hi[i] = -HUGE_VAL;
+  }
+  for (const Box& b : boxes)
+    for (int i = 0; i < 3; ++i) {
+      const double c = 0.5 * (b.lo[i] + b.hi[i]);
+      lo[i] = std::min(lo[i], c);
+      hi[i] = std::max(hi[i], c);
+    }
+  std::vector<std::pair<uint64_t, int>> keyed(n);
+  for (int k = 0; k < n; ++k) {
+    uint64_t code = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double span = hi[i] - lo[i];
+      const double c = 0.5 * (boxes[k].lo[i] + boxes[k].hi[i]);
+      const double t = span > 0.0 ? (c - lo[i]) / span : 0.0;
+      code |= spread_bits(static_cast<uint64_t>(t * 2097151.0)) << i;
+    }
+    keyed[k] = {code, k};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (int k = 0; k < n; ++k) order_[k] = keyed[k].second;
+  nodes_.reserve(2 * (n / kLeafSize + 1));
+  build_range(0, n);
+}
+
+// A balanced tree over sorted positions: halves of the range (Morton order
+// keeps each half spatially compact), leaves of up to kLeafSize boxes.
+int BoxTree::build_range(int lo, int hi) {
+  const int id = static_cast<int>(nodes_.size());
+  nodes_.push_back(Node());
+  nodes_[id].lo = lo;
+  nodes_[id].hi = hi;
+  Box box = (*boxes_)[order_[lo]];
+  if (hi - lo <= kLeafSize) {
+    for (int p = lo + 1; p < hi; ++p) grow(box, (*boxes_)[order_[p]]);
+  } else {
+    const int mid = lo + (hi - lo) / 2;
+    const int left = build_range(lo, mid);
+    const int right = build_range(mid, hi);
+    box = nodes_[left].box;
+    grow(box, nodes_[right].box);
+    nodes_[id].left = left;
+    nodes_[id].right = right;
+  }
+  nodes_[id].box = box;
+  return id;
+}
+
+}  // namespace model
+}  // namespace b2b

@@ -1,0 +1,483 @@
+// Model::update: one Newton iteration of the host.
+//   1. the current coordinates of the beams' nodes (checked)
+//   2. the broad phase, rebuilt only when a node has left its skin
+//   3. the near pairs among the candidates (boxes within contact reach), plus
+//      the contacts of the last commit
+//   4. their segments, built once, in parallel
+//   5. the contact element on every such pair, in parallel, in fixed chunks
+//   6. handover: a committed contact whose point left its pair follows it,
+//      hop by hop, with its committed history mapped across each joint
+//   7. the active set, sorted by pair, and the trial histories
+// Nothing of the model changes unless all of it succeeds.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <b2b/b2b.h>
+
+#ifdef B2B_HAVE_OPENMP
+#include <omp.h>
+#endif
+
+#include "../pair/handover.hpp"
+#include "../pair/history.hpp"
+#include "model.hpp"
+#include "segment_geometry.hpp"
+
+namespace b2b {
+namespace model {
+
+namespace {
+
+constexpr int kChunk = 32;  // pairs per parallel work item
+
+// Direction in which the contact point left a segment: +1 beyond its end
+// (including the end joint, which belongs to the next segment), -1 before
+// its start, 0 inside.
+int exit_direction(double t) {
+  if (t >= 1.0 - 1e-12) return 1;
+  if (t < -1.0) return -1;
+  return 0;
+}
+
+}  // namespace
+
+class Updater {
+ public:
+  Updater(Model& m, const double* x, int ldx, bool want_tangent)
+      : m_(m), x_(x), ldx_(ldx), want_tangent_(want_tangent) {}
+  Problem run();
+
+ private:
+  struct Item {
+    uint64_t key;
+    int a, b, gp;
+    const double* hist_old;  // committed history, or null (fresh)
+    pair::PairResult res;
+    int64_t tangent = -1;    // offset into tangents_
+  };
+  Model& m_;
+  const double* x_;
+  int ldx_;
+  bool want_tangent_;
+  std::vector<double> cur_;
+  std::vector<Box> boxes_;
+  std::vector<std::pair<int, int>> new_candidates_;
+  bool rebuilt_ = false;
+  std::vector<int> slot_;                 // segment -> index into built_ (-1: not built)
+  std::vector<curve::Segment> built_;
+  std::vector<Item> items_;
+  std::vector<double> tangents_;
+  std::vector<double> fresh_;             // zeros: a fresh history
+  int hops_ = 0, lost_ = 0, near_ = 0;
+
+  int nt() const {
+#ifdef B2B_HAVE_OPENMP
+    return m_.threads > 0 ? m_.threads : omp_get_max_threads();
+#else
+    return 1;
+#endif
+  }
+  Problem gather();
+  void broad_phase();
+  void near_pairs();
+  Problem build_segments();
+  Problem build_one(int s);
+  pair::SegmentRef ref(int s) const {
+    const SegmentInfo& info = m_.table_.segment(s);
+    return pair::SegmentRef{&built_[slot_[s]], info.kind, info.start_rule, info.end_rule,
+                            info.radius};
+  }
+  void evaluate(Item& item, double* K) const;
+  Problem evaluate_all();
+  Problem handovers();
+  Problem overflow(const Item& item) const;
+  void finish();
+};
+
+Problem Model::update(const double* x, int ldx, bool want_tangent) {
+  Updater u(*this, x, ldx, want_tangent);
+  return u.run();
+}
+
+Problem Updater::run() {
+  const bool had_arcs = m_.table_.arcs_measured();
+  Problem pb = gather();
+  if (!pb.status) {
+    broad_phase();
+    near_pairs();
+    pb = build_segments();
+  }
+  if (!pb.status) pb = evaluate_all();
+  if (!pb.status) pb = handovers();
+  if (pb.status) {
+    if (!had_arcs && m_.table_.arcs_measured()) m_.table_.set_arcs({}, {}, {});
+    return pb;
+  }
+  finish();
+  return pb;
+}
+
+Problem Updater::gather() {
+  Problem pb;
+  const std::vector<int>& used = m_.used_nodes_;
+  cur_.resize(3 * used.size());
+  for (size_t u = 0; u < used.size(); ++u) {
+    const double* p = x_ + static_cast<size_t>(ldx_) * used[u];
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(p[i]) || std::fabs(p[i]) > B2B_COORD_MAX) {
+        pb.status = std::isfinite(p[i]) ? B2B_ERR_RANGE : B2B_ERR_NONFINITE;
+        pb.what = Problem::What::Coordinate;
+        pb.node = used[u];
+        pb.axis = i;
+        pb.value = p[i];
+        return pb;
+      }
+      cur_[3 * u + i] = p[i];
+    }
+  }
+  bool self = false;
+  for (const Beam& b : m_.beams_) self = self || b.self_contact;
+  if (self && !m_.table_.arcs_measured())
+    m_.table_.measure_arcs(m_.beams_, cur_.data(), m_.used_index_);
+  const int n = m_.table_.segment_count();
+  boxes_.resize(n);
+  for (int s = 0; s < n; ++s)
+    boxes_[s] = segment_box(m_.table_.segment(s), cur_.data(), m_.used_index_);
+  return pb;
+}
+
+// Verlet skin: the candidates stay valid until a node has moved more than
+// half the margin since they were found (segment_geometry.hpp says why the
+// boxes are grown by r + g0/2 + 4s/3 for that).
+void Updater::broad_phase() {
+  const double s = m_.effective_margin();
+  bool rebuild = m_.build_coords_.size() != cur_.size();
+  for (size_t k = 0; !rebuild && k < cur_.size(); k += 3) {
+    const double* p = &cur_[k];
+    const double* q = &m_.build_coords_[k];
+    const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                      (p[2] - q[2]) * (p[2] - q[2]);
+    rebuild = d2 > 0.25 * s * s;
+  }
+  if (!rebuild) return;
+  rebuilt_ = true;
+  const int n = static_cast<int>(boxes_.size());
+  std::vector<Box>& grown = m_.search_boxes_;
+  grown.resize(n);
+  for (int k = 0; k < n; ++k) {
+    const double g = m_.table_.segment(k).radius + 0.5 * m_.g0_max_ + 4.0 * s / 3.0;
+    for (int i = 0; i < 3; ++i) {
+      grown[k].lo[i] = boxes_[k].lo[i] - g;
+      grown[k].hi[i] = boxes_[k].hi[i] + g;
+    }
+  }
+  m_.tree_.build(grown);
+  const Model& m = m_;
+  m_.tree_.overlapping_pairs([&m](int a, int b) { return m.may_pair(a, b); }, m_.threads,
+                             new_candidates_);
+}
+
+void Updater::near_pairs() {
+  const std::vector<std::pair<int, int>>& cand = rebuilt_ ? new_candidates_ : m_.candidates_;
+  const double s = m_.effective_margin();
+  const ContactState& committed = m_.committed_;
+  items_.clear();
+  for (const auto& c : cand) {
+    const int gp = m_.group_pair_index(c.first, c.second);
+    const pair::Params& p = m_.group_pairs_[gp].params;
+    const double g0 = p.law == B2B_LAW_QUADRATIC ? p.regularization_gap : 0.0;
+    const double reach = m_.table_.segment(c.first).radius + m_.table_.segment(c.second).radius +
+                         g0 + s;
+    if (box_distance(boxes_[c.first], boxes_[c.second]) > reach) continue;
+    ++near_;
+    Item it;
+    it.key = pair_key(c.first, c.second);
+    it.a = c.first;
+    it.b = c.second;
+    it.gp = gp;
+    it.hist_old = nullptr;
+    items_.push_back(it);
+  }
+  // The contacts of the last commit are evaluated whatever the boxes say:
+  // their pair tells where the point went.
+  for (const StoredPair& sp : committed.pairs) {
+    if (sp.status != B2B_CONTACT_ACTIVE) continue;
+    Item it;
+    it.key = sp.key;
+    it.a = sp.a;
+    it.b = sp.b;
+    it.gp = sp.group_pair;
+    it.hist_old = nullptr;
+    items_.push_back(it);
+  }
+  std::sort(items_.begin(), items_.end(), [](const Item& x, const Item& y) { return x.key < y.key; });
+  items_.erase(std::unique(items_.begin(), items_.end(),
+                           [](const Item& x, const Item& y) { return x.key == y.key; }),
+               items_.end());
+  // A pair with a committed history keeps its orientation and reads it.
+  for (Item& it : items_)
+    if (const StoredPair* sp = committed.find(it.key)) {
+      it.a = sp->a;
+      it.b = sp->b;
+      it.hist_old = committed.history(*sp);
+    }
+}
+
+Problem Updater::build_one(int s) {
+  Problem pb;
+  slot_[s] = static_cast<int>(built_.size());
+  built_.emplace_back();
+  const curve::Failure f =
+      build_segment(m_.table_.segment(s), cur_.data(), m_.used_index_, built_.back(), true);
+  if (f.status) {
+    pb.status = f.status;
+    pb.what = Problem::What::Segment;
+    pb.beam = m_.table_.segment(s).beam;
+    pb.segment = m_.table_.segment(s).index;
+    pb.slot_a = f.slot_a;
+    pb.slot_b = f.slot_b;
+  }
+  return pb;
+}
+
+Problem Updater::build_segments() {
+  const int n = m_.table_.segment_count();
+  slot_.assign(n, -1);
+  std::vector<int> need;
+  for (const Item& it : items_) {
+    need.push_back(it.a);
+    need.push_back(it.b);
+  }
+  std::sort(need.begin(), need.end());
+  need.erase(std::unique(need.begin(), need.end()), need.end());
+  const int nn = static_cast<int>(need.size());
+  if (nn == 0) return Problem();
+  built_.assign(nn, curve::Segment());
+  built_.reserve(nn + 64);  // handovers add a few
+  for (int k = 0; k < nn; ++k) slot_[need[k]] = k;
+  std::vector<curve::Failure> fail(nn);
+  const SegmentInfo* info = &m_.table_.segment(0);
+  const double* cur = cur_.data();
+  const std::vector<int>& used = m_.used_index_;
+  curve::Segment* built = built_.data();
+#ifdef B2B_HAVE_OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt())
+#endif
+  for (int k = 0; k < nn; ++k) fail[k] = build_segment(info[need[k]], cur, used, built[k], true);
+  for (int k = 0; k < nn; ++k)
+    if (fail[k].status) {
+      Problem pb;
+      pb.status = fail[k].status;
+      pb.what = Problem::What::Segment;
+      pb.beam = info[need[k]].beam;
+      pb.segment = info[need[k]].index;
+      pb.slot_a = fail[k].slot_a;
+      pb.slot_b = fail[k].slot_b;
+      return pb;
+    }
+  return Problem();
+}
+
+void Updater::evaluate(Item& item, double* K) const {
+  const double* h = item.hist_old ? item.hist_old : fresh_.data();
+  pair::evaluate_built(m_.group_pairs_[item.gp].params, ref(item.a), ref(item.b), h, item.res, K);
+}
+
+Problem Updater::overflow(const Item& item) const {
+  Problem pb;
+  pb.status = B2B_ERR_RANGE;
+  pb.what = Problem::What::Overflow;
+  const SegmentInfo &a = m_.table_.segment(item.a), &b = m_.table_.segment(item.b);
+  pb.beam = a.beam;
+  pb.segment = a.index;
+  pb.other_beam = b.beam;
+  pb.other_segment = b.index;
+  pb.value = m_.group_pairs_[item.gp].params.penalty;
+  return pb;
+}
+
+Problem Updater::evaluate_all() {
+  fresh_.assign(pair::kHistoryLengthMax, 0.0);
+  const int n = static_cast<int>(items_.size());
+  const int n_chunks = (n + kChunk - 1) / kChunk;
+  // Each chunk keeps the tangents of its active pairs; concatenated in chunk
+  // order below, so the layout does not depend on the threads.
+  std::vector<std::vector<double>> parts(want_tangent_ ? n_chunks : 0);
+  Item* items = items_.data();
+#ifdef B2B_HAVE_OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nt())
+#endif
+  for (int c = 0; c < n_chunks; ++c) {
+    double K[pair::kNdof * pair::kNdof];
+    const int end = std::min(n, (c + 1) * kChunk);
+    for (int k = c * kChunk; k < end; ++k) {
+      evaluate(items[k], want_tangent_ ? K : nullptr);
+      if (want_tangent_ && items[k].res.contact_status == B2B_CONTACT_ACTIVE) {
+        items[k].tangent = static_cast<int64_t>(parts[c].size());
+        parts[c].insert(parts[c].end(), K, K + pair::kNdof * pair::kNdof);
+      }
+    }
+  }
+  for (int c = 0; c < n_chunks && want_tangent_; ++c) {
+    const int64_t base = static_cast<int64_t>(tangents_.size());
+    tangents_.insert(tangents_.end(), parts[c].begin(), parts[c].end());
+    const int end = std::min(n, (c + 1) * kChunk);
+    for (int k = c * kChunk; k < end; ++k)
+      if (items[k].tangent >= 0) items[k].tangent += base;
+  }
+  for (const Item& it : items_)
+    if (it.res.overflow) return overflow(it);
+  return Problem();
+}
+
+Problem Updater::handovers() {
+  const ContactState& committed = m_.committed_;
+  std::vector<uint64_t> claimed;  // targets a handover has taken in this update
+  auto find_item = [this](uint64_t key) -> Item* {
+    auto it = std::lower_bound(items_.begin(), items_.end(), key,
+                               [](const Item& i, uint64_t k) { return i.key < k; });
+    return (it != items_.end() && it->key == key) ? &*it : nullptr;
+  };
+  const size_t n_sorted = items_.size();  // items_[0, n_sorted) stay sorted; new ones follow
+  std::vector<Item> added;
+  for (const StoredPair& sp : committed.pairs) {
+    if (sp.status != B2B_CONTACT_ACTIVE) continue;
+    const Item* own = find_item(sp.key);
+    if (!own || own->res.contact_status != B2B_CONTACT_OUTSIDE) continue;
+    const GroupPair& gp = m_.group_pairs_[sp.group_pair];
+    double hist[pair::kHistoryLengthMax];
+    std::memcpy(hist, committed.history(sp), gp.hist_len * sizeof(double));
+    int a = sp.a, b = sp.b, hops = 0;
+    double xi = own->res.info[B2B_INFO_XI], eta = own->res.info[B2B_INFO_ETA];
+    bool found = false;
+    while (true) {
+      const int da = exit_direction(xi), db = exit_direction(eta);
+      if (da == 0 && db == 0) break;
+      bool moved = true;
+      for (int side = 0; side < 2 && moved; ++side) {
+        const int d = side == 0 ? da : db;
+        if (d == 0) continue;
+        int& s = side == 0 ? a : b;
+        const int next = m_.table_.neighbour(s, d);
+        moved = next >= 0 && handover_committed(m_.table_, s, next, side, d, m_.committed_coords_,
+                                                m_.used_index_, hist, gp.hist_len);
+        if (moved) s = next;
+        ++hops;
+      }
+      if (!moved || hops > m_.max_hops) break;
+      const uint64_t key = pair_key(a, b);
+      const StoredPair* target = committed.find(key);
+      if (target && target->status == B2B_CONTACT_ACTIVE) {  // its own contact: merged
+        found = true;
+        break;
+      }
+      if (std::find(claimed.begin(), claimed.end(), key) != claimed.end()) break;
+      if (!m_.may_pair(a, b)) break;
+      for (int s : {a, b})
+        if (slot_[s] < 0)
+          if (Problem pb = build_one(s); pb.status) return pb;
+      Item trial;
+      trial.key = key;
+      trial.a = a;
+      trial.b = b;
+      trial.gp = sp.group_pair;
+      trial.hist_old = hist;
+      double K[pair::kNdof * pair::kNdof];
+      evaluate(trial, want_tangent_ ? K : nullptr);
+      if (trial.res.overflow) return overflow(trial);
+      const int st = trial.res.contact_status;
+      if (st == B2B_CONTACT_ACTIVE || st == B2B_CONTACT_OPEN) {
+        trial.hist_old = nullptr;  // the handed-over history lives only here
+        if (want_tangent_ && st == B2B_CONTACT_ACTIVE) {
+          trial.tangent = static_cast<int64_t>(tangents_.size());
+          tangents_.insert(tangents_.end(), K, K + pair::kNdof * pair::kNdof);
+        }
+        claimed.push_back(key);
+        if (Item* existing = find_item(key); existing && existing - items_.data() < static_cast<std::ptrdiff_t>(n_sorted))
+          *existing = trial;
+        else
+          added.push_back(trial);
+        found = true;
+        break;
+      }
+      if (st != B2B_CONTACT_OUTSIDE) break;
+      xi = trial.res.info[B2B_INFO_XI];
+      eta = trial.res.info[B2B_INFO_ETA];
+    }
+    hops_ += hops;
+    if (!found) ++lost_;
+  }
+  items_.insert(items_.end(), added.begin(), added.end());
+  std::stable_sort(items_.begin(), items_.end(),
+                   [](const Item& x, const Item& y) { return x.key < y.key; });
+  return Problem();
+}
+
+void Updater::finish() {
+  Model& m = m_;
+  ContactState trial;
+  std::vector<Contact> contacts;
+  int counts[16] = {0};
+  double totals[8] = {0};
+  double min_gap = HUGE_VAL;
+  for (const Item& it : items_) {
+    const pair::PairResult& r = it.res;
+    const int st = r.contact_status;
+    switch (st) {
+      case B2B_CONTACT_ACTIVE: ++counts[B2B_COUNT_ACTIVE]; break;
+      case B2B_CONTACT_OPEN: ++counts[B2B_COUNT_OPEN]; break;
+      case B2B_CONTACT_OUTSIDE: ++counts[B2B_COUNT_OUTSIDE]; break;
+      case B2B_CONTACT_PARALLEL: ++counts[B2B_COUNT_PARALLEL]; break;
+      case B2B_CONTACT_NOT_CONVERGED: ++counts[B2B_COUNT_NOT_CONVERGED]; break;
+      default: ++counts[B2B_COUNT_NO_NORMAL]; break;
+    }
+    if (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN) continue;
+    min_gap = std::min(min_gap, r.info[B2B_INFO_GAP]);
+    const GroupPair& gp = m.group_pairs_[it.gp];
+    trial.pairs.push_back(StoredPair{it.key, it.a, it.b, st, it.gp, trial.hist.size(), gp.hist_len});
+    trial.hist.insert(trial.hist.end(), r.history, r.history + gp.hist_len);
+    if (st != B2B_CONTACT_ACTIVE) continue;
+    Contact c;
+    c.a = it.a;
+    c.b = it.b;
+    std::memcpy(c.nodes, m.table_.segment(it.a).nodes, sizeof(int) * 4);
+    std::memcpy(c.nodes + 4, m.table_.segment(it.b).nodes, sizeof(int) * 4);
+    std::memcpy(c.info, r.info, sizeof c.info);
+    std::memcpy(c.residual, r.residual, sizeof c.residual);
+    c.tangent = it.tangent;
+    contacts.push_back(c);
+    totals[B2B_TOTAL_ENERGY] += r.info[B2B_INFO_ENERGY];
+    totals[B2B_TOTAL_DISSIPATION_STEP] += r.info[B2B_INFO_DISSIPATION];
+    totals[B2B_TOTAL_NORMAL_FORCE] += r.info[B2B_INFO_NORMAL_FORCE];
+    if (r.info[B2B_INFO_FRICTION_STATE] == B2B_FRICTION_STICK) ++counts[B2B_COUNT_STICK];
+    if (r.info[B2B_INFO_FRICTION_STATE] == B2B_FRICTION_SLIP) ++counts[B2B_COUNT_SLIP];
+  }
+  trial.dissipation = m.committed_.dissipation + totals[B2B_TOTAL_DISSIPATION_STEP];
+  totals[B2B_TOTAL_DISSIPATION] = trial.dissipation;
+  totals[B2B_TOTAL_MIN_GAP] = min_gap == HUGE_VAL ? 0.0 : min_gap;
+
+  if (rebuilt_) {
+    m.candidates_.swap(new_candidates_);
+    m.build_coords_ = cur_;
+    ++m.builds_;
+  }
+  counts[B2B_COUNT_CANDIDATES] = static_cast<int>(m.candidates_.size());
+  counts[B2B_COUNT_EVALUATED] = static_cast<int>(items_.size());
+  counts[B2B_COUNT_FAR] = counts[B2B_COUNT_CANDIDATES] - near_;
+  counts[B2B_COUNT_SEARCH_BUILDS] = m.builds_;
+  counts[B2B_COUNT_HANDOVERS] = hops_;
+  counts[B2B_COUNT_LOST] = lost_;
+  std::memcpy(m.counts_, counts, sizeof counts);
+  std::memcpy(m.totals_, totals, sizeof totals);
+  m.trial_ = std::move(trial);
+  m.contacts_ = std::move(contacts);
+  m.tangents_ = std::move(tangents_);
+  m.current_coords_ = std::move(cur_);
+  m.want_tangent_ = want_tangent_;
+  m.updated_ = true;
+  m.has_results_ = true;
+}
+
+}  // namespace model
+}  // namespace b2b
