@@ -25,17 +25,20 @@
  *                         m12, x2, m23, linear in the nodes). One segment per
  *                         node, centred on x2; slot x4 unused. It cuts the
  *                         corner at x2: it does not pass through the nodes.
- *  HERMITE_NODAL          Litewka's node-preserving curve (the seed abstract,
- *                         eq. 1-3): the cubic Hermite from x2 to x3 with
+ *  HERMITE_NODAL          Litewka's node-preserving curve (doc/curves.md
+ *                         section 3.3; doc/bibliography.md entry 5): the
+ *                         cubic Hermite from x2 to x3 with
  *                         dx/dxi(-1) = l23 (x3 - x1)/(2 l13) and
  *                         dx/dxi(1) = l23 (x4 - x2)/(2 l24).
  *  HERMITE_NODAL_WEIGHTED as HERMITE_NODAL, but the unit tangent at a node is
  *                         that of the parabola through the node and its two
  *                         neighbours with chord-length parameter:
  *                         t2 ~ l23^2 (x2 - x1) + l12^2 (x3 - x2). Same patch,
- *                         still node-preserving, and fourth-order accurate on
- *                         non-uniform meshes where HERMITE_NODAL drops to
- *                         second order. Not Litewka's published method.
+ *                         still node-preserving, and as accurate on
+ *                         non-uniform meshes as on uniform ones (fourth order
+ *                         on a circle, third on a general space curve;
+ *                         doc/curves.md section 6), where HERMITE_NODAL drops
+ *                         to second order. Not Litewka's published method.
  *
  * All kinds are C1 in position and unit tangent across segment joints
  * (except LINEAR, which is only C0); the nodal kinds are C1 in the chord-length

@@ -104,9 +104,9 @@
  *     A with respect to B since then is, on the current configuration,
  *         g_T = (I - n n^T) (x_A(xi_n) - x_B(eta_n)),
  *     the tangential part of the vector between the two material points that
- *     were in contact ("finite form", contact-notes.md 3). It is zero for any
- *     rigid motion of both beams, exact for straight beams and finite steps,
- *     and needs no derivative of the closest points beyond the first.
+ *     were in contact ("finite form", doc/friction.md section 2). It is zero
+ *     for any rigid motion of both beams, exact for straight beams and finite
+ *     steps, and needs no derivative of the closest points beyond the first.
  *   Transport: the committed force is stored by its components in the
  *     orthonormal frame e1 = x_A,xi / |x_A,xi|, e2 = n x e1 at the contact
  *     and rebuilt in the current frame, so it stays in the tangent plane,

@@ -9,8 +9,9 @@
 //             (derivative of the chord-length parabola through a, b, c)
 //   Constant  u = a host-given direction (only L varies with X).
 // Value, 3x12 Jacobian and, for any vector w, the 12x12 contraction
-// w . d2T/dX2 are computed in closed form (contact-notes.md 2.2); the
-// latter in the node differences z, where it is a 6x6 matrix (see below).
+// w . d2T/dX2 are computed in closed form (doc/curves.md sections 7-8); the
+// latter in the node differences z (section 9), where it is a 6x6 matrix
+// (see below).
 #pragma once
 
 namespace b2b {

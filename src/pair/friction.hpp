@@ -1,5 +1,5 @@
 // Coulomb friction of an active contact pair (Zavarise and Wriggers 2000,
-// Litewka and Wriggers 2002; contact-notes.md 3; the contract is in
+// Litewka and Wriggers 2002; doc/friction.md sections 2-6; the contract is in
 // b2b_pair.h): the slip of the material points that were in contact at the
 // committed step, the committed force carried in the frame of beam A's
 // tangent, the penalty trial force, the return mapping onto the Coulomb cone,

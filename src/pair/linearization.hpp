@@ -3,8 +3,8 @@
 // columns", compacted so that the tangent's loops are short and vectorise):
 // J = [P_A, -P_B] at the closest points, the gap gradient g = J^T n, the
 // derivative B of the orthogonality conditions and the closest points' motion
-// [dxi/dX; deta/dX] = -H^-1 B (contact-notes.md 1.3). Shared by the normal
-// tangent and the friction tangent.
+// [dxi/dX; deta/dX] = -H^-1 B (doc/contact-element.md section 10). Shared by
+// the normal tangent and the friction tangent.
 #pragma once
 
 #include "../curve/segment.hpp"

@@ -1,6 +1,6 @@
 // Normal contact laws: force f_N(g) >= 0 (compressive), its slope df_N/dg and
 // the potential Pi(g) = integral from g to infinity of f_N, so that
-// dPi/dg = -f_N (contact-notes.md 1.2).
+// dPi/dg = -f_N (doc/contact-element.md section 8).
 #pragma once
 
 #include <b2b/b2b.h>

@@ -1,6 +1,6 @@
 // The dense part of the frictionless tangent on the used columns (the hot
 // loop of a tangent evaluation). With f = f_N, fp = df_N/dg, rho the signed
-// distance of the axes (contact-notes.md 1.3 in closed form):
+// distance of the axes (doc/contact-element.md section 10 in closed form):
 //   K = -fp g g^T - (f/rho) (J^T (I - n n^T) J - B^T H^-1 B),
 // symmetric. The curves' second derivatives in X are added by the caller.
 #pragma once

@@ -43,8 +43,9 @@ START_TEST(midpoint_second_order) {
 }
 END_TEST
 
-/* The seed method is fourth order on uniform meshes only: on non-uniform
- * ones the central chord x3 - x1 is not the tangent (contact-notes 2.3). */
+/* Litewka's node-preserving method (doc/curves.md section 3.3) is fourth
+ * order on a circle (uniform mesh) only: on non-uniform ones the central
+ * chord x3 - x1 is not the tangent (doc/curves.md section 6). */
 START_TEST(nodal_fourth_order_uniform_second_order_alternating) {
   expect_order(B2B_CURVE_HERMITE_NODAL, 0, 4.0);
   expect_order(B2B_CURVE_HERMITE_NODAL, 1, 2.0);

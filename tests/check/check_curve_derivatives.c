@@ -192,7 +192,8 @@ START_TEST(nodal_second_derivatives) { for_all_cases(check_second, 303, "second 
 END_TEST
 
 /* The kinds that are linear in the nodes have exactly zero second
- * derivatives; the node-preserving kinds do not (the seed's point). */
+ * derivatives; the node-preserving kinds do not (Litewka's point, entry 5 of
+ * doc/bibliography.md; doc/curves.md section 8). */
 START_TEST(second_derivatives_vanish_only_where_linear) {
   tst_rng rng;
   tst_rng_seed(&rng, 404);

@@ -125,8 +125,9 @@ START_TEST(linear_kind_is_the_chord) {
 }
 END_TEST
 
-/* The seed's end tangents, eq. (2): dx/dxi(-1) = l23 (x3 - x1) / (2 l13). */
-START_TEST(nodal_end_tangents_are_the_seeds) {
+/* Litewka's end tangents (doc/curves.md section 3.3):
+ * dx/dxi(-1) = l23 (x3 - x1) / (2 l13). */
+START_TEST(nodal_end_tangents_are_litewkas) {
   tst_rng rng;
   tst_rng_seed(&rng, 14);
   double patch[12], x[9];
@@ -161,7 +162,8 @@ START_TEST(nodal_end_tangents_are_the_seeds) {
 }
 END_TEST
 
-/* With equal neighbouring element lengths the weighted tangent is the seed's. */
+/* With equal neighbouring element lengths the weighted tangent is Litewka's
+ * (doc/curves.md section 3.4). */
 START_TEST(weighted_equals_nodal_on_uniform_spacing) {
   double coords[3 * 12];
   tst_ring_nodes(12, 2.0, 0, coords);
@@ -184,7 +186,7 @@ static Suite *make_suite(void) {
   tcase_add_test(tc, nodal_kinds_pass_through_nodes);
   tcase_add_test(tc, midpoint_kind_passes_through_element_midpoints);
   tcase_add_test(tc, linear_kind_is_the_chord);
-  tcase_add_test(tc, nodal_end_tangents_are_the_seeds);
+  tcase_add_test(tc, nodal_end_tangents_are_litewkas);
   tcase_add_test(tc, weighted_equals_nodal_on_uniform_spacing);
   suite_add_tcase(s, tc);
   return s;
