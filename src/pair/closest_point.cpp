@@ -66,6 +66,7 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
                              double eta, int max_iterations, double tol_length, double scale) {
   ClosestPoints r;
   const double inv_scale = 1.0 / scale;
+  int pinned = 0;  // consecutive iterations held at the box by a step that points out of it
   for (int it = 0;; ++it) {
     double xa[3], xad[3], xadd[3], xb[3], xbd[3], xbdd[3], d[3];
     A.point(xi, xa, xad, xadd);
@@ -127,8 +128,18 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
         alpha *= 0.5;
       }
     }
-    xi = clamp(xi + alpha * s1, -kBox, kBox);
-    eta = clamp(eta + alpha * s2, -kBox, kBox);
+    const double xi_free = xi + alpha * s1, eta_free = eta + alpha * s2;
+    xi = clamp(xi_free, -kBox, kBox);
+    eta = clamp(eta_free, -kBox, kBox);
+    // An iterate the box holds back twice in a row, both times with phi
+    // still decreasing outwards, is after a closest point beyond the box,
+    // well off this pair's segments: the search stops there (the caller
+    // reports OUTSIDE) instead of spending every iteration at the wall.
+    pinned = (xi != xi_free || eta != eta_free) ? pinned + 1 : 0;
+    if (pinned >= 2) {
+      r.iterations = it + 1;
+      break;
+    }
   }
   r.xi = xi;
   r.eta = eta;

@@ -391,6 +391,33 @@ END_TEST
 
 /* ------------------------------------------------------- the C1 normal law */
 
+/* Two straight segments whose axes cross far beyond both (xi about 4.5):
+ * the search is held at the edge of its box by steps that point out of it,
+ * and must give up there (OUTSIDE) within a few iterations, not spend all of
+ * them; most candidate pairs of a contact model are of this kind. */
+START_TEST(pinned_search_returns_outside_early) {
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  char msg[B2B_ERRMSG_LEN];
+  ck_assert_int_eq(b2b_params_set_real(p, "penalty", 1e3, msg, sizeof msg), B2B_ERR_STATE);
+  const int segs[6] = {B2B_CURVE_LINEAR, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR,
+                       B2B_CURVE_LINEAR, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR};
+  /* A along x from 0 to 1, B along y through x = 2.75 (xi = 4.5), 0.1 above */
+  const double X[24] = {0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0,
+                        0, 0, 0, 2.75, -0.5, 0.1, 2.75, 0.5, 0.1, 0, 0, 0};
+  const double radii[2] = {0.1, 0.1};
+  double h0[8] = {0}, h1[8], info[32], r[24];
+  int st;
+  ck_assert_int_eq(b2b_pair_eval(p, segs, X, NULL, radii, h0, h1, 8, &st, info, r, NULL, 24, msg,
+                                 sizeof msg), B2B_OK);
+  ck_assert_int_eq(st, B2B_CONTACT_OUTSIDE);
+  ck_assert_msg(info[B2B_INFO_ITERATIONS] <= 6, "%g iterations", info[B2B_INFO_ITERATIONS]);
+  ck_assert(info[B2B_INFO_XI] > 1.0);
+  printf("pinned search: OUTSIDE after %g iterations at xi = %g\n", info[B2B_INFO_ITERATIONS],
+         info[B2B_INFO_XI]);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 START_TEST(quadratic_law_is_c1) {
   const double eps = 1e3, g0 = 0.02;
   b2b_params *p = tst_params(B2B_LAW_QUADRATIC, eps, g0);
@@ -437,6 +464,7 @@ static Suite *make_suite(void) {
   tcase_add_test(tc, parallel_threshold_is_an_option);
   tcase_add_test(tc, closest_points_from_any_start);
   tcase_add_test(tc, quadratic_law_is_c1);
+  tcase_add_test(tc, pinned_search_returns_outside_early);
   suite_add_tcase(s, tc);
   return s;
 }
