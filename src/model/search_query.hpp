@@ -22,7 +22,7 @@ void BoxTree::overlapping_pairs(Accept accept, int threads,
   std::vector<std::vector<std::pair<int, int>>> parts(n_chunks);
 #ifdef B2B_HAVE_OPENMP
   const int nt = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(nt)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nt) if (n_chunks > 1)
 #else
   (void)threads;
 #endif

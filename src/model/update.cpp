@@ -30,6 +30,10 @@ namespace model {
 namespace {
 
 constexpr int kChunk = 32;  // pairs per parallel work item
+// Below these sizes a parallel region costs more than it saves (starting a
+// team, and idle threads spinning on a busy machine): run on one thread.
+constexpr int kParallelPairs = 1024;
+constexpr int kParallelSegments = 2048;
 
 // Direction in which the contact point left a segment: +1 beyond its end
 // (including the end joint, which belongs to the next segment), -1 before
@@ -262,7 +266,7 @@ Problem Updater::build_segments() {
   const std::vector<int>& used = m_.used_index_;
   curve::Segment* built = built_.data();
 #ifdef B2B_HAVE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(nt())
+#pragma omp parallel for schedule(static) num_threads(nt()) if (nn >= kParallelSegments)
 #endif
   for (int k = 0; k < nn; ++k) fail[k] = build_segment(info[need[k]], cur, used, built[k], true);
   for (int k = 0; k < nn; ++k)
@@ -306,7 +310,7 @@ Problem Updater::evaluate_all() {
   std::vector<std::vector<double>> parts(want_tangent_ ? n_chunks : 0);
   Item* items = items_.data();
 #ifdef B2B_HAVE_OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(nt())
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nt()) if (n >= kParallelPairs)
 #endif
   for (int c = 0; c < n_chunks; ++c) {
     double K[pair::kNdof * pair::kNdof];
