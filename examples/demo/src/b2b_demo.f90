@@ -1,0 +1,37 @@
+!> b2b_demo: solves one scene file.
+!>   b2b_demo scene.nml [output_dir]
+!> Prints one line per load step, writes VTK and CSV files (demo_output) and
+!> exits with 0 only if every step converged; any error stops with a message
+!> and exit code 2.
+program b2b_demo
+  use demo_model, only: scene_model
+  use demo_scene_reader, only: read_scene
+  use demo_solver, only: solve_scene
+  use demo_errors, only: fatal
+  use demo_output, only: output_remove_stale
+  use b2b, only: b2b_version
+  implicit none
+  type(scene_model) :: m
+  character(len=1024) :: file, dir
+  integer :: major, minor, patch, i, j
+
+  if (command_argument_count() < 1 .or. command_argument_count() > 2) &
+    call fatal('usage: b2b_demo scene.nml [output_dir]')
+  call get_command_argument(1, file)
+  call b2b_version(major, minor, patch)
+  write (*, '(a,i0,a,i0,a,i0,a)') 'b2b_demo (b2b ', major, '.', minor, '.', patch, '): ' // trim(file)
+  dir = ''
+  if (command_argument_count() == 2) then
+    ! results of an earlier run go before anything can fail, so that a
+    ! failed run never leaves a complete-looking result behind
+    call get_command_argument(2, dir)
+    i = index(file, '/', back=.true.)
+    j = index(file, '.', back=.true.)
+    if (j <= i) j = len_trim(file) + 1
+    call output_remove_stale(trim(dir), file(i + 1:j - 1))
+  end if
+  call read_scene(trim(file), m)
+  if (len_trim(dir) > 0) m%out_dir = dir
+  call solve_scene(m)
+  write (*, '(a)') trim(m%name) // ': complete, results in ' // trim(m%out_dir)
+end program b2b_demo

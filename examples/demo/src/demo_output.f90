@@ -1,0 +1,189 @@
+!> Result files of a scene, in out_dir:
+!>   <name>_NNNN.vtp   beam axes of step NNNN (VTK XML PolyData, ASCII): one
+!>                     polyline per beam, point data radius, displacement,
+!>                     rotation (rotation vector); cell data beam, group
+!>   <name>.pvd        the collection of those files by load factor
+!>   <name>_history.csv, <name>_convergence.csv
+!> The .pvd and the CSV files are written only when the whole run succeeded,
+!> and the stale ones of an earlier run are deleted when a run starts: a
+!> failed run never leaves a result that looks complete.
+module demo_output
+  use demo_kinds, only: dp
+  use demo_model, only: scene_model
+  use demo_history, only: run_history
+  use demo_rotation, only: quat_to_rotvec
+  use demo_errors, only: fatal
+  implicit none
+  private
+  public :: output_begin, output_step, output_finish, output_path, output_remove_stale
+
+  integer :: n_files = 0
+  real(dp), allocatable :: file_lam(:)
+  character(len=256), allocatable :: file_name(:)
+
+contains
+
+  function output_path(m, suffix) result(p)
+    type(scene_model), intent(in) :: m
+    character(len=*), intent(in) :: suffix
+    character(len=:), allocatable :: p
+    p = trim(m%out_dir) // '/' // trim(m%name) // suffix
+  end function output_path
+
+  subroutine output_begin(m)
+    type(scene_model), intent(in) :: m
+    n_files = 0
+    if (allocated(file_lam)) deallocate (file_lam, file_name)
+    allocate (file_lam(16), file_name(16))
+    call output_remove_stale(m%out_dir, m%name)
+  end subroutine output_begin
+
+  !> Deletes the complete-run files of scene `name` in dir, if any.
+  subroutine output_remove_stale(dir, name)
+    character(len=*), intent(in) :: dir, name
+    call remove(trim(dir) // '/' // trim(name) // '.pvd')
+    call remove(trim(dir) // '/' // trim(name) // '_history.csv')
+    call remove(trim(dir) // '/' // trim(name) // '_convergence.csv')
+  end subroutine output_remove_stale
+
+  subroutine remove(path)
+    character(len=*), intent(in) :: path
+    integer :: u, ios
+    logical :: there
+    inquire (file=path, exist=there)
+    if (.not. there) return
+    open (newunit=u, file=path, iostat=ios)
+    if (ios == 0) close (u, status='delete', iostat=ios)
+  end subroutine remove
+
+  !> The .vtp file of a converged step (step 0 = initial state).
+  subroutine output_step(m, step, lam)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: step
+    real(dp), intent(in) :: lam
+    character(len=16) :: tag
+    character(len=256), allocatable :: tmpn(:)
+    real(dp), allocatable :: tmpl(:)
+    character(len=:), allocatable :: path
+    integer :: u, ios, i, b, n, k
+
+    if (.not. m%vtk) return
+    write (tag, '(a,i4.4,a)') '_', step, '.vtp'
+    path = output_path(m, trim(tag))
+    open (newunit=u, file=path, status='replace', action='write', iostat=ios)
+    if (ios /= 0) call fatal(path // ': cannot write (does the output directory ' // trim(m%out_dir) // ' exist?)')
+    write (u, '(a)') '<?xml version="1.0"?>'
+    write (u, '(a)') '<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian">'
+    write (u, '(a)') '<PolyData>'
+    write (u, '(a,i0,a,i0,a)') '<Piece NumberOfPoints="', m%n_nodes, '" NumberOfLines="', m%n_beams, '">'
+    write (u, '(a)') '<Points>'
+    write (u, '(a)') '<DataArray type="Float64" NumberOfComponents="3" format="ascii">'
+    write (u, '(3es24.15e3)') m%x
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '</Points>'
+    write (u, '(a)') '<Lines>'
+    write (u, '(a)') '<DataArray type="Int32" Name="connectivity" format="ascii">'
+    do b = 1, m%n_beams
+      ! 0-based point ids; a ring repeats its first node to close the line
+      write (u, '(20(i0,1x))') (m%beam_first_node(b) - 1 + i, i = 0, m%beam_n_nodes(b) - 1), &
+        (m%beam_first_node(b) - 1, k = 1, merge(1, 0, m%beam_closed(b)))
+    end do
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '<DataArray type="Int32" Name="offsets" format="ascii">'
+    n = 0
+    do b = 1, m%n_beams
+      n = n + m%beam_n_nodes(b) + merge(1, 0, m%beam_closed(b))
+      write (u, '(i0)') n
+    end do
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '</Lines>'
+    write (u, '(a)') '<PointData Scalars="radius" Vectors="displacement">'
+    write (u, '(a)') '<DataArray type="Float64" Name="radius" format="ascii">'
+    do b = 1, m%n_beams
+      write (u, '(es24.15e3)') (m%beam_radius(b), i = 1, m%beam_n_nodes(b))
+    end do
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '<DataArray type="Float64" Name="displacement" NumberOfComponents="3" format="ascii">'
+    write (u, '(3es24.15e3)') m%x - m%x0
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '<DataArray type="Float64" Name="rotation" NumberOfComponents="3" format="ascii">'
+    do i = 1, m%n_nodes
+      write (u, '(3es24.15e3)') quat_to_rotvec(m%q(:, i))
+    end do
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '</PointData>'
+    write (u, '(a)') '<CellData Scalars="beam">'
+    write (u, '(a)') '<DataArray type="Int32" Name="beam" format="ascii">'
+    write (u, '(i0)') (b, b = 1, m%n_beams)
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '<DataArray type="Int32" Name="group" format="ascii">'
+    write (u, '(i0)') m%beam_group
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '</CellData>'
+    write (u, '(a)') '</Piece>'
+    write (u, '(a)') '</PolyData>'
+    write (u, '(a)') '</VTKFile>'
+    close (u)
+
+    if (n_files == size(file_lam)) then
+      allocate (tmpl(2 * n_files), tmpn(2 * n_files))
+      tmpl(1:n_files) = file_lam(1:n_files)
+      tmpn(1:n_files) = file_name(1:n_files)
+      call move_alloc(tmpl, file_lam)
+      call move_alloc(tmpn, file_name)
+    end if
+    n_files = n_files + 1
+    file_lam(n_files) = lam
+    file_name(n_files) = trim(m%name) // trim(tag)
+  end subroutine output_step
+
+  !> CSV files and the .pvd collection, after a complete run.
+  subroutine output_finish(m, h)
+    type(scene_model), intent(in) :: m
+    type(run_history), intent(in) :: h
+    character(len=:), allocatable :: path
+    integer :: u, ios, i
+
+    if (m%csv) then
+      path = output_path(m, '_history.csv')
+      open (newunit=u, file=path, status='replace', action='write', iostat=ios)
+      if (ios /= 0) call fatal(path // ': cannot write')
+      write (u, '(a)') 'step,load_factor,iterations,cutbacks,residual,residual_ref,' &
+                       // 'ux,uy,uz,rx,ry,rz'
+      do i = 1, h%n_steps
+        associate (s => h%steps(i))
+          write (u, '(i0,",",es23.15e3,2(",",i0),8(",",es23.15e3))') s%step, s%lam, s%iterations, &
+            s%cutbacks, s%last_norm, s%ref, s%u, s%rot
+        end associate
+      end do
+      close (u)
+      path = output_path(m, '_convergence.csv')
+      open (newunit=u, file=path, status='replace', action='write', iostat=ios)
+      if (ios /= 0) call fatal(path // ': cannot write')
+      write (u, '(a)') 'step,load_factor,iteration,residual,residual_ref'
+      do i = 1, h%n_iters
+        associate (s => h%iters(i))
+          write (u, '(i0,",",es23.15e3,",",i0,2(",",es23.15e3))') s%step, s%lam, s%iteration, s%norm, s%ref
+        end associate
+      end do
+      close (u)
+    end if
+
+    if (m%vtk) then
+      path = output_path(m, '.pvd')
+      open (newunit=u, file=path, status='replace', action='write', iostat=ios)
+      if (ios /= 0) call fatal(path // ': cannot write')
+      write (u, '(a)') '<?xml version="1.0"?>'
+      write (u, '(a)') '<VTKFile type="Collection" version="1.0" byte_order="LittleEndian">'
+      write (u, '(a)') '<Collection>'
+      do i = 1, n_files
+        write (u, '(a,es23.15e3,a)') '<DataSet timestep="', file_lam(i), '" group="" part="0" file="' &
+          // trim(file_name(i)) // '"/>'
+      end do
+      write (u, '(a)') '</Collection>'
+      write (u, '(a)') '</VTKFile>'
+      close (u)
+    end if
+  end subroutine output_finish
+
+end module demo_output

@@ -1,0 +1,539 @@
+!> Reads one scene file (Fortran namelist groups, see examples/demo/README.md),
+!> validates every value, generates the mesh and fills a scene_model.
+!> Any error stops the program (demo_errors%fatal) with the file, the line,
+!> the group and key, and what to change.
+module demo_scene_reader
+  use demo_kinds, only: dp, pi, ndf
+  use demo_errors, only: fatal, str
+  use demo_model, only: scene_model, name_len
+  use demo_nml_scan, only: nml_index, nml_scan, lower
+  use demo_geometry, only: line_points, arc_points, element_frame
+  use demo_rotation, only: quat_identity
+  use, intrinsic :: iso_fortran_env, only: iostat_end
+  implicit none
+  private
+  public :: read_scene
+
+  real(dp), parameter :: unset = -huge(1.0_dp)
+  integer, parameter :: iunset = -huge(1)
+
+  character(len=*), parameter :: groups_valid = 'scene material beam support load motion output contact'
+  character(len=*), parameter :: keys_scene = 'title n_steps max_iter max_cutbacks tol solver'
+  character(len=*), parameter :: keys_material = 'id E nu radius A Iy Iz J'
+  character(len=*), parameter :: keys_beam = 'shape p1 p2 centre start axis angle n_el material group up'
+  character(len=*), parameter :: keys_support = 'beam node all dofs'
+  character(len=*), parameter :: keys_load = 'beam node force moment'
+  character(len=*), parameter :: keys_motion = 'beam node dof value'
+  character(len=*), parameter :: keys_output = 'vtk csv vtk_every dir monitor_beam monitor_node'
+  character(len=*), parameter :: keys_contact = 'curve law penalty regularization_gap friction ' &
+                                                // 'tangential_penalty self_contact pairs'
+
+  integer, parameter :: max_pairs = 64
+
+  type(nml_index) :: idx   ! where the keys are, for messages
+
+contains
+
+  subroutine read_scene(file, m)
+    character(len=*), intent(in) :: file
+    type(scene_model), intent(out) :: m
+    logical :: ok
+    character(len=:), allocatable :: msg
+    integer :: u, ios
+    integer, allocatable :: mat_id(:)
+    real(dp), allocatable :: mat_stiff(:, :), mat_radius(:)
+
+    call nml_scan(file, idx, ok, msg)
+    if (.not. ok) call fatal(msg)
+    call check_names()
+    m%file = file
+    m%name = base_name(file)
+    open (newunit=u, file=file, status='old', action='read', iostat=ios)
+    if (ios /= 0) call fatal(file // ': cannot open the scene file')
+    call read_scene_group(u, m)
+    call read_materials(u, mat_id, mat_stiff, mat_radius)
+    call read_beams(u, m, mat_id, mat_stiff, mat_radius)
+    call read_supports(u, m)
+    call read_loads(u, m)
+    call read_motions(u, m)
+    call read_output(u, m)
+    call read_contact(u, m)
+    close (u)
+    allocate (m%x(3, m%n_nodes), m%q(4, m%n_nodes))
+    m%x = m%x0
+    m%q = spread(quat_identity(), 2, m%n_nodes)
+  end subroutine read_scene
+
+  ! ---------------------------------------------------------------- checks
+
+  !> Unknown groups and keys, with their line and the valid names.
+  subroutine check_names()
+    integer :: i
+    character(len=:), allocatable :: valid
+    valid = ''
+    do i = 1, idx%n_groups
+      if (.not. in_list(idx%groups(i)%name, groups_valid)) &
+        call fatal(idx%file // ':' // str(idx%groups(i)%line) // ': unknown group &' &
+                   // trim(idx%groups(i)%name) // '; valid groups: ' // groups_valid)
+    end do
+    do i = 1, idx%n_keys
+      select case (idx%keys(i)%group)
+      case ('scene'); valid = keys_scene
+      case ('material'); valid = keys_material
+      case ('beam'); valid = keys_beam
+      case ('support'); valid = keys_support
+      case ('load'); valid = keys_load
+      case ('motion'); valid = keys_motion
+      case ('output'); valid = keys_output
+      case default; valid = keys_contact
+      end select
+      if (.not. in_list(idx%keys(i)%key, valid)) &
+        call fatal(idx%file // ':' // str(idx%keys(i)%line) // ': unknown key ''' // trim(idx%keys(i)%key) &
+                   // ''' in &' // trim(idx%keys(i)%group) // '; valid keys: ' // valid)
+    end do
+    if (idx%count('scene') /= 1) call fatal(idx%file // ': needs exactly one &scene group (found ' &
+                                             // str(idx%count('scene')) // ')')
+    if (idx%count('material') < 1) call fatal(idx%file // ': needs at least one &material group')
+    if (idx%count('beam') < 1) call fatal(idx%file // ': needs at least one &beam group')
+    if (idx%count('output') > 1) call fatal(idx%file // ': at most one &output group')
+    if (idx%count('contact') > 1) call fatal(idx%file // ': at most one &contact group')
+  end subroutine check_names
+
+  !> Stops naming file:line, group occurrence and key.
+  subroutine bad(group, k, key, what)
+    character(len=*), intent(in) :: group, key, what
+    integer, intent(in) :: k
+    call fatal(idx%file // ':' // str(idx%key_line(group, k, key)) // ': &' // group // ' (number ' &
+               // str(k) // '), key ' // key // ': ' // what)
+  end subroutine bad
+
+  subroutine need_real(group, k, key, x)
+    character(len=*), intent(in) :: group, key
+    integer, intent(in) :: k
+    real(dp), intent(in) :: x(:)
+    if (any(x < -0.5_dp * huge(1.0_dp))) call bad(group, k, key, 'missing: set ' // key // ' = ' &
+                                                    // trim(merge('a value         ', 'three components', size(x) == 1)))
+  end subroutine need_real
+
+  subroutine need_int(group, k, key, i)
+    character(len=*), intent(in) :: group, key
+    integer, intent(in) :: k, i
+    if (i == iunset) call bad(group, k, key, 'missing: set ' // key // ' = an integer')
+  end subroutine need_int
+
+  subroutine positive(group, k, key, x)
+    character(len=*), intent(in) :: group, key
+    integer, intent(in) :: k
+    real(dp), intent(in) :: x
+    if (.not. (x > 0.0_dp)) call bad(group, k, key, 'is ' // str(x) // '; it must be positive')
+  end subroutine positive
+
+  subroutine read_failed(group, k, ios, iomsg)
+    character(len=*), intent(in) :: group, iomsg
+    integer, intent(in) :: k, ios
+    call fatal(idx%file // ':' // str(idx%group_line(group, k)) // ': cannot read &' // group // ' (number ' &
+               // str(k) // '): ' // trim(iomsg) // ' (iostat ' // str(ios) // '); check the values'' types')
+  end subroutine read_failed
+
+  ! ---------------------------------------------------------------- groups
+
+  subroutine read_scene_group(u, m)
+    integer, intent(in) :: u
+    type(scene_model), intent(inout) :: m
+    character(len=name_len) :: title
+    character(len=16) :: solver
+    integer :: n_steps, max_iter, max_cutbacks, ios
+    real(dp) :: tol
+    character(len=256) :: iomsg
+    namelist /scene/ title, n_steps, max_iter, max_cutbacks, tol, solver
+    title = ''; n_steps = iunset; max_iter = 25; max_cutbacks = 6; tol = 1.0e-9_dp; solver = 'auto'
+    rewind (u)
+    read (u, nml=scene, iostat=ios, iomsg=iomsg)
+    if (ios /= 0) call read_failed('scene', 1, ios, iomsg)
+    call need_int('scene', 1, 'n_steps', n_steps)
+    if (n_steps < 1) call bad('scene', 1, 'n_steps', 'is ' // str(n_steps) // '; it must be at least 1')
+    if (max_iter < 1) call bad('scene', 1, 'max_iter', 'is ' // str(max_iter) // '; it must be at least 1')
+    if (max_cutbacks < 0) call bad('scene', 1, 'max_cutbacks', 'is ' // str(max_cutbacks) // '; it must be >= 0')
+    if (.not. (tol > 0.0_dp .and. tol < 1.0_dp)) call bad('scene', 1, 'tol', 'is ' // str(tol) &
+                                                            // '; it must be in (0, 1), e.g. 1e-9')
+    solver = lower(solver)
+    if (.not. in_list(solver, 'auto banded dense')) call bad('scene', 1, 'solver', '''' // trim(solver) &
+                                                               // ''' is not one of auto, banded, dense')
+    m%title = title; m%n_steps = n_steps; m%max_iter = max_iter; m%max_cutbacks = max_cutbacks
+    m%tol = tol; m%solver = solver
+  end subroutine read_scene_group
+
+  subroutine read_materials(u, mat_id, mat_stiff, mat_radius)
+    integer, intent(in) :: u
+    integer, allocatable, intent(out) :: mat_id(:)
+    real(dp), allocatable, intent(out) :: mat_stiff(:, :), mat_radius(:)
+    integer :: id
+    real(dp) :: e, nu, radius, a, iy, iz, j
+    namelist /material/ id, e, nu, radius, a, iy, iz, j
+    integer :: n_mat, k, ios
+    character(len=256) :: iomsg
+    ! materials
+    n_mat = idx%count('material')
+    allocate (mat_id(n_mat), mat_stiff(4, n_mat), mat_radius(n_mat))
+    rewind (u)
+    do k = 1, n_mat
+      id = k; e = unset; nu = unset; radius = unset; a = unset; iy = unset; iz = unset; j = unset
+      read (u, nml=material, iostat=ios, iomsg=iomsg)
+      if (ios /= 0) call read_failed('material', k, ios, iomsg)
+      call need_real('material', k, 'E', [e])
+      call positive('material', k, 'E', e)
+      call need_real('material', k, 'nu', [nu])
+      if (.not. (nu > -1.0_dp .and. nu < 0.5_dp)) call bad('material', k, 'nu', 'is ' // str(nu) &
+                                                           // '; it must be in (-1, 0.5)')
+      if (radius > -0.5_dp * huge(1.0_dp)) then
+        ! circular solid section
+        call positive('material', k, 'radius', radius)
+        if (idx%has_key('material', k, 'a') .or. idx%has_key('material', k, 'iy') .or. &
+            idx%has_key('material', k, 'iz') .or. idx%has_key('material', k, 'j')) &
+          call bad('material', k, 'radius', 'given together with A/Iy/Iz/J: give either radius or all of A, Iy, Iz, J')
+        a = pi * radius**2
+        iy = 0.25_dp * pi * radius**4
+        iz = iy
+        j = 2.0_dp * iy
+      else
+        if (.not. (a > -0.5_dp * huge(1.0_dp))) call bad('material', k, 'radius', &
+            'missing: give radius (circular section) or all of A, Iy, Iz, J')
+        call need_real('material', k, 'Iy', [iy])
+        call need_real('material', k, 'Iz', [iz])
+        call need_real('material', k, 'J', [j])
+        call positive('material', k, 'A', a)
+        call positive('material', k, 'Iy', iy)
+        call positive('material', k, 'Iz', iz)
+        call positive('material', k, 'J', j)
+        radius = sqrt(a / pi)   ! for plotting: the circle of the same area
+      end if
+      if (any(mat_id(1:k - 1) == id)) call bad('material', k, 'id', 'id ' // str(id) // ' is used twice')
+      mat_id(k) = id
+      ! [EA, GJ, EIy, EIz] with G = E / (2 (1 + nu))
+      mat_stiff(:, k) = [e * a, 0.5_dp * e / (1.0_dp + nu) * j, e * iy, e * iz]
+      mat_radius(k) = radius
+    end do
+
+  end subroutine read_materials
+
+  subroutine read_beams(u, m, mat_id, mat_stiff, mat_radius)
+    integer, intent(in) :: u
+    type(scene_model), intent(inout) :: m
+    integer, intent(in) :: mat_id(:)
+    real(dp), intent(in) :: mat_stiff(:, :), mat_radius(:)
+    character(len=16) :: shape
+    real(dp) :: p1(3), p2(3), centre(3), start(3), axis(3), angle, up(3)
+    integer :: n_el, material, group
+    namelist /beam/ shape, p1, p2, centre, start, axis, angle, n_el, material, group, up
+    integer :: n_beam, ios, b, i, first, nn, ne, el, n_pts
+    real(dp), allocatable :: pts(:, :), all_x(:, :), b_up(:, :)
+    character(len=256) :: iomsg
+    logical :: ok, closed
+
+    ! beams: first pass for sizes, generating the points
+    n_beam = idx%count('beam')
+    m%n_beams = n_beam
+    allocate (m%beam_first_node(n_beam), m%beam_n_nodes(n_beam), m%beam_first_el(n_beam), m%beam_n_el(n_beam), &
+              m%beam_closed(n_beam), m%beam_radius(n_beam), m%beam_group(n_beam), b_up(3, n_beam))
+    allocate (all_x(3, 0))
+    allocate (m%conn(2, 0), m%el_beam(0), m%el_stiff(4, 0))
+    rewind (u)
+    nn = 0
+    ne = 0
+    do b = 1, n_beam
+      shape = ''; p1 = unset; p2 = unset; centre = unset; start = unset; axis = unset; angle = unset
+      n_el = iunset; material = 1; group = 1; up = unset
+      read (u, nml=beam, iostat=ios, iomsg=iomsg)
+      if (ios /= 0) call read_failed('beam', b, ios, iomsg)
+      if (len_trim(shape) == 0) call bad('beam', b, 'shape', 'missing: set shape = ''line'', ''arc'' or ''ring''')
+      call need_int('beam', b, 'n_el', n_el)
+      if (n_el < 1) call bad('beam', b, 'n_el', 'is ' // str(n_el) // '; it must be at least 1')
+      shape = lower(shape)
+      closed = .false.
+      select case (shape)
+      case ('line')
+        call need_real('beam', b, 'p1', p1)
+        call need_real('beam', b, 'p2', p2)
+        if (.not. (norm2(p2 - p1) > 0.0_dp)) call bad('beam', b, 'p2', 'equals p1: a line needs two distinct points')
+        pts = line_points(p1, p2, n_el)
+        if (up(1) < -0.5_dp * huge(1.0_dp)) then
+          ! default cross-section axis: global z, or y for a vertical line
+          up = [0.0_dp, 0.0_dp, 1.0_dp]
+          if (norm2(cross(p2 - p1, up)) < 1.0e-6_dp * norm2(p2 - p1)) up = [0.0_dp, 1.0_dp, 0.0_dp]
+        end if
+      case ('arc', 'ring')
+        call need_real('beam', b, 'centre', centre)
+        call need_real('beam', b, 'start', start)
+        call need_real('beam', b, 'axis', axis)
+        if (.not. (norm2(axis) > 0.0_dp)) call bad('beam', b, 'axis', 'is zero: give the normal of the arc''s plane')
+        if (.not. (norm2(cross(axis, start - centre)) > 1.0e-9_dp * norm2(start - centre))) &
+          call bad('beam', b, 'start', 'must lie off the axis through centre (radius > 0)')
+        if (shape == 'arc') then
+          call need_real('beam', b, 'angle', [angle])
+          if (.not. (abs(angle) > 0.0_dp .and. abs(angle) < 360.0_dp)) &
+            call bad('beam', b, 'angle', 'is ' // str(angle) // ' degrees; an arc needs 0 < |angle| < 360' &
+                     // ' (use shape = ''ring'' for a closed one)')
+          n_pts = n_el + 1
+        else
+          if (n_el < 3) call bad('beam', b, 'n_el', 'a ring needs at least 3 elements')
+          angle = 360.0_dp
+          closed = .true.
+          n_pts = n_el
+        end if
+        pts = arc_points(centre, start, axis, angle, n_el, n_pts)
+        if (up(1) < -0.5_dp * huge(1.0_dp)) up = axis   ! default: local z normal to the plane of the arc
+      case default
+        call bad('beam', b, 'shape', '''' // trim(shape) // ''' is not one of line, arc, ring')
+      end select
+      if (.not. any(mat_id == material)) call bad('beam', b, 'material', 'no &material with id = ' // str(material))
+      i = findloc(mat_id, material, dim=1)
+      if (group < 1) call bad('beam', b, 'group', 'is ' // str(group) // '; contact groups are numbered from 1')
+
+      m%beam_first_node(b) = nn + 1
+      m%beam_n_nodes(b) = size(pts, 2)
+      m%beam_first_el(b) = ne + 1
+      m%beam_n_el(b) = n_el
+      m%beam_closed(b) = closed
+      m%beam_radius(b) = mat_radius(i)
+      m%beam_group(b) = group
+      b_up(:, b) = up
+      all_x = reshape([all_x, pts], [3, nn + size(pts, 2)])
+      first = nn
+      nn = nn + size(pts, 2)
+      m%conn = reshape([m%conn, new_conn(first, n_el, size(pts, 2), closed)], [2, ne + n_el])
+      m%el_beam = [m%el_beam, spread(b, 1, n_el)]
+      m%el_stiff = reshape([m%el_stiff, spread(mat_stiff(:, i), 2, n_el)], [4, ne + n_el])
+      ne = ne + n_el
+    end do
+    m%n_nodes = nn
+    m%n_elements = ne
+    call move_alloc(all_x, m%x0)
+
+    allocate (m%el_l0(ne), m%el_frame(3, 3, ne))
+    do el = 1, ne
+      associate (xa => m%x0(:, m%conn(1, el)), xb => m%x0(:, m%conn(2, el)))
+        m%el_l0(el) = norm2(xb - xa)
+        if (.not. (m%el_l0(el) > 0.0_dp)) call bad('beam', m%el_beam(el), 'n_el', 'element ' // str(el) // ' has zero length')
+        call element_frame(xa, xb, b_up(:, m%el_beam(el)), m%el_frame(:, :, el), ok)
+        if (.not. ok) call bad('beam', m%el_beam(el), 'up', 'is parallel to element ' // str(el) &
+                               // ': give a cross-section axis up = (3 components) not along the beam')
+      end associate
+    end do
+
+    allocate (m%fixed(ndf, nn), m%prescribed(ndf, nn), m%fext(ndf, nn))
+    m%fixed = .false.
+    m%prescribed = 0.0_dp
+    m%fext = 0.0_dp
+  end subroutine read_beams
+
+  !> Element connectivity of a chain of n_pts nodes after node `first`.
+  pure function new_conn(first, n_el, n_pts, closed) result(c)
+    integer, intent(in) :: first, n_el, n_pts
+    logical, intent(in) :: closed
+    integer :: c(2, n_el), i
+    do i = 1, n_el
+      c(:, i) = [first + i, first + i + 1]
+    end do
+    if (closed) c(2, n_el) = first + 1
+    if (.not. closed .and. n_pts /= n_el + 1) c = 0
+  end function new_conn
+
+  !> Global node of (beam, node) from a group occurrence; node < 0 counts from the end.
+  integer function node_of(m, group, k, beam, node) result(g)
+    type(scene_model), intent(in) :: m
+    character(len=*), intent(in) :: group
+    integer, intent(in) :: k, beam, node
+    integer :: n
+    call need_int(group, k, 'beam', beam)
+    if (beam < 1 .or. beam > m%n_beams) call bad(group, k, 'beam', 'beam ' // str(beam) // ' does not exist; the' &
+                                                  // ' scene has beams 1..' // str(m%n_beams))
+    call need_int(group, k, 'node', node)
+    n = m%beam_n_nodes(beam)
+    if (node == 0 .or. abs(node) > n) call bad(group, k, 'node', 'node ' // str(node) // ' is out of range: beam ' &
+        // str(beam) // ' has nodes 1..' // str(n) // ' (or -1..-' // str(n) // ' counted from its end)')
+    if (node > 0) then
+      g = m%beam_first_node(beam) + node - 1
+    else
+      g = m%beam_first_node(beam) + n + node
+    end if
+  end function node_of
+
+  subroutine read_supports(u, m)
+    integer, intent(in) :: u
+    type(scene_model), intent(inout) :: m
+    integer :: beam, node, k, ios, g, d
+    logical :: all
+    character(len=16) :: dofs
+    character(len=256) :: iomsg
+    namelist /support/ beam, node, all, dofs
+    rewind (u)
+    do k = 1, idx%count('support')
+      beam = iunset; node = iunset; all = .false.; dofs = ''
+      read (u, nml=support, iostat=ios, iomsg=iomsg)
+      if (ios /= 0) call read_failed('support', k, ios, iomsg)
+      if (len_trim(dofs) /= ndf .or. verify(trim(dofs), '01') /= 0) call bad('support', k, 'dofs', &
+          '''' // trim(dofs) // ''' is not 6 characters 0/1 (ux uy uz rx ry rz; 1 = fixed), e.g. dofs = ''111111''')
+      if (all) then
+        call need_int('support', k, 'beam', beam)
+        if (beam < 1 .or. beam > m%n_beams) call bad('support', k, 'beam', 'beam ' // str(beam) &
+            // ' does not exist; the scene has beams 1..' // str(m%n_beams))
+        if (idx%has_key('support', k, 'node')) call bad('support', k, 'node', 'given with all = .true.: give one of them')
+        do g = m%beam_first_node(beam), m%beam_first_node(beam) + m%beam_n_nodes(beam) - 1
+          call fix(g)
+        end do
+      else
+        g = node_of(m, 'support', k, beam, node)
+        call fix(g)
+      end if
+    end do
+  contains
+    subroutine fix(g)
+      integer, intent(in) :: g
+      do d = 1, ndf
+        if (dofs(d:d) == '1') m%fixed(d, g) = .true.
+      end do
+    end subroutine fix
+  end subroutine read_supports
+
+  subroutine read_loads(u, m)
+    integer, intent(in) :: u
+    type(scene_model), intent(inout) :: m
+    integer :: beam, node, k, ios, g
+    real(dp) :: force(3), moment(3)
+    character(len=256) :: iomsg
+    namelist /load/ beam, node, force, moment
+    rewind (u)
+    do k = 1, idx%count('load')
+      beam = iunset; node = iunset; force = unset; moment = unset
+      read (u, nml=load, iostat=ios, iomsg=iomsg)
+      if (ios /= 0) call read_failed('load', k, ios, iomsg)
+      g = node_of(m, 'load', k, beam, node)
+      if (any(force < -0.5_dp * huge(1.0_dp)) .and. any(moment < -0.5_dp * huge(1.0_dp))) &
+        call bad('load', k, 'force', 'missing: give force = (3 components) and/or moment = (3 components)')
+      if (idx%has_key('load', k, 'force')) call need_real('load', k, 'force', force)
+      if (idx%has_key('load', k, 'moment')) call need_real('load', k, 'moment', moment)
+      if (idx%has_key('load', k, 'force')) m%fext(1:3, g) = m%fext(1:3, g) + force
+      if (idx%has_key('load', k, 'moment')) m%fext(4:6, g) = m%fext(4:6, g) + moment
+    end do
+  end subroutine read_loads
+
+  subroutine read_motions(u, m)
+    integer, intent(in) :: u
+    type(scene_model), intent(inout) :: m
+    integer :: beam, node, dof, k, ios, g
+    real(dp) :: value
+    character(len=256) :: iomsg
+    namelist /motion/ beam, node, dof, value
+    rewind (u)
+    do k = 1, idx%count('motion')
+      beam = iunset; node = iunset; dof = iunset; value = unset
+      read (u, nml=motion, iostat=ios, iomsg=iomsg)
+      if (ios /= 0) call read_failed('motion', k, ios, iomsg)
+      g = node_of(m, 'motion', k, beam, node)
+      call need_int('motion', k, 'dof', dof)
+      if (dof < 1 .or. dof > ndf) call bad('motion', k, 'dof', 'is ' // str(dof) // '; dofs are 1..6 (ux uy uz rx ry rz)')
+      call need_real('motion', k, 'value', [value])
+      m%fixed(dof, g) = .true.
+      m%prescribed(dof, g) = value
+    end do
+  end subroutine read_motions
+
+  subroutine read_output(u, m)
+    integer, intent(in) :: u
+    type(scene_model), intent(inout) :: m
+    logical :: vtk, csv
+    integer :: vtk_every, monitor_beam, monitor_node, ios
+    character(len=name_len) :: dir
+    character(len=256) :: iomsg
+    namelist /output/ vtk, csv, vtk_every, dir, monitor_beam, monitor_node
+    vtk = .true.; csv = .true.; vtk_every = 1; dir = '.'
+    monitor_beam = m%n_beams; monitor_node = -1
+    if (idx%count('output') == 1) then
+      rewind (u)
+      read (u, nml=output, iostat=ios, iomsg=iomsg)
+      if (ios /= 0) call read_failed('output', 1, ios, iomsg)
+    end if
+    if (vtk_every < 1) call bad('output', 1, 'vtk_every', 'is ' // str(vtk_every) // '; it must be at least 1')
+    if (len_trim(dir) == 0) call bad('output', 1, 'dir', 'is empty; use ''.'' for the current directory')
+    m%vtk = vtk; m%csv = csv; m%vtk_every = vtk_every; m%out_dir = dir
+    m%monitor_node = node_of(m, 'output', 1, monitor_beam, monitor_node)
+  end subroutine read_output
+
+  subroutine read_contact(u, m)
+    integer, intent(in) :: u
+    type(scene_model), intent(inout) :: m
+    character(len=32) :: curve, law
+    real(dp) :: penalty, regularization_gap, friction, tangential_penalty
+    logical :: self_contact
+    integer :: pairs(2, max_pairs), ios, n, i
+    character(len=256) :: iomsg
+    namelist /contact/ curve, law, penalty, regularization_gap, friction, tangential_penalty, self_contact, pairs
+    if (idx%count('contact') == 0) return
+    curve = ''; law = 'linear'; penalty = unset; regularization_gap = 0.0_dp; friction = 0.0_dp
+    tangential_penalty = 0.0_dp; self_contact = .false.; pairs = 0
+    rewind (u)
+    read (u, nml=contact, iostat=ios, iomsg=iomsg)
+    if (ios /= 0) call read_failed('contact', 1, ios, iomsg)
+    curve = lower(curve)
+    if (len_trim(curve) == 0) call bad('contact', 1, 'curve', 'missing: set curve = ''linear'', ''hermite_midpoint'', ' &
+                                       // '''hermite_nodal'' or ''hermite_nodal_weighted''')
+    if (.not. in_list(curve, 'linear hermite_midpoint hermite_nodal hermite_nodal_weighted')) &
+      call bad('contact', 1, 'curve', '''' // trim(curve) // ''' is not one of linear, hermite_midpoint, ' &
+               // 'hermite_nodal, hermite_nodal_weighted')
+    law = lower(law)
+    if (.not. in_list(law, 'linear quadratic')) call bad('contact', 1, 'law', '''' // trim(law) &
+                                                          // ''' is not one of linear, quadratic')
+    call need_real('contact', 1, 'penalty', [penalty])
+    call positive('contact', 1, 'penalty', penalty)
+    if (regularization_gap < 0.0_dp) call bad('contact', 1, 'regularization_gap', 'is ' // str(regularization_gap) &
+                                              // '; it must be >= 0')
+    if (law == 'quadratic' .and. .not. (regularization_gap > 0.0_dp)) call bad('contact', 1, 'regularization_gap', &
+        'the quadratic law needs regularization_gap > 0 (the gap at which contact starts)')
+    if (friction < 0.0_dp) call bad('contact', 1, 'friction', 'is ' // str(friction) // '; it must be >= 0')
+    if (friction > 0.0_dp) call positive('contact', 1, 'tangential_penalty', tangential_penalty)
+    if (tangential_penalty < 0.0_dp) call bad('contact', 1, 'tangential_penalty', 'is ' // str(tangential_penalty) &
+                                              // '; it must be >= 0')
+    n = 0
+    do i = 1, max_pairs
+      if (all(pairs(:, i) == 0)) exit
+      if (any(pairs(:, i) < 1)) call bad('contact', 1, 'pairs', 'pair ' // str(i) // ' is incomplete or not positive:' &
+                                         // ' give pairs = ga, gb, ... with contact group numbers >= 1')
+      if (.not. any(m%beam_group == pairs(1, i)) .or. .not. any(m%beam_group == pairs(2, i))) &
+        call bad('contact', 1, 'pairs', 'pair ' // str(i) // ' (' // str(pairs(1, i)) // ', ' // str(pairs(2, i)) &
+                 // ') names a group no beam belongs to (set group = on the &beam groups)')
+      n = i
+    end do
+    if (n == 0 .and. .not. self_contact) call bad('contact', 1, 'pairs', &
+        'missing: give pairs = ga, gb (groups that touch) or self_contact = .true.')
+    m%contact%enabled = .true.
+    m%contact%curve = curve; m%contact%law = law; m%contact%penalty = penalty
+    m%contact%regularization_gap = regularization_gap; m%contact%friction = friction
+    m%contact%tangential_penalty = tangential_penalty; m%contact%self_contact = self_contact
+    m%contact%n_pairs = n
+    m%contact%pairs = pairs(:, 1:n)
+  end subroutine read_contact
+
+  ! ---------------------------------------------------------------- helpers
+
+  logical function in_list(word, list)
+    character(len=*), intent(in) :: word, list
+    in_list = index(' ' // lower(list) // ' ', ' ' // trim(lower(word)) // ' ') > 0 .and. len_trim(word) > 0
+  end function in_list
+
+  pure function cross(a, b) result(c)
+    real(dp), intent(in) :: a(3), b(3)
+    real(dp) :: c(3)
+    c = [a(2) * b(3) - a(3) * b(2), a(3) * b(1) - a(1) * b(3), a(1) * b(2) - a(2) * b(1)]
+  end function cross
+
+  pure function base_name(file) result(s)
+    character(len=*), intent(in) :: file
+    character(len=name_len) :: s
+    integer :: i, j
+    i = index(file, '/', back=.true.)
+    s = file(i + 1:)
+    j = index(s, '.', back=.true.)
+    if (j > 1) s = s(1:j - 1)
+  end function base_name
+
+end module demo_scene_reader
