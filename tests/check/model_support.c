@@ -259,3 +259,43 @@ int tst_model_contacts(const b2b_model *m, tst_contact *out, int max) {
                              sizeof msg), msg);
   return n;
 }
+
+size_t tst_model_record(const b2b_model *m, int with_tangent, unsigned char *buf, size_t cap) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  size_t used = 0;
+#define PUT(ptr, bytes)                                  \
+  do {                                                   \
+    ck_assert_msg(used + (bytes) <= cap, "record full"); \
+    memcpy(buf + used, (ptr), (bytes));                  \
+    used += (bytes);                                     \
+  } while (0)
+  int counts[16], n;
+  double totals[8];
+  ok(b2b_model_stats(m, counts, totals, msg, sizeof msg), msg);
+  /* the search counts depend on when the search ran, not on the results */
+  counts[B2B_COUNT_CANDIDATES] = counts[B2B_COUNT_FAR] = counts[B2B_COUNT_SEARCH_BUILDS] = 0;
+  counts[B2B_COUNT_EVALUATED] = counts[B2B_COUNT_OPEN] = counts[B2B_COUNT_OUTSIDE] = 0;
+  counts[B2B_COUNT_PARALLEL] = counts[B2B_COUNT_NOT_CONVERGED] = 0;
+  totals[B2B_TOTAL_MIN_GAP] = 0.0;
+  PUT(counts, sizeof counts);
+  PUT(totals, sizeof totals);
+  ok(b2b_model_contact_count(m, &n, msg, sizeof msg), msg);
+  PUT(&n, sizeof n);
+  for (int k = 0; k < n; ++k) {
+    int nodes[8], pair[4];
+    double info[32], res[24], K[576];
+    ok(b2b_model_get_contact(m, k, nodes, pair, info, res, with_tangent ? K : NULL, 24, msg,
+                             sizeof msg), msg);
+    PUT(nodes, sizeof nodes);
+    PUT(pair, sizeof pair);
+    PUT(info, sizeof info);
+    PUT(res, sizeof res);
+    if (with_tangent) PUT(K, sizeof K);
+  }
+#undef PUT
+  return used;
+}
+
+void tst_scene_move(tst_scene *sc, const double *v, double step) {
+  for (int k = 0; k < 3 * sc->n_nodes; ++k) sc->x[k] += step * v[k];
+}

@@ -51,3 +51,11 @@ int tst_brute_force(const tst_scene *sc, const b2b_params *params, int all_pairs
 int tst_model_contacts(const b2b_model *m, tst_contact *out, int max);
 
 #endif
+
+/* Everything the last update gives a host (counts, totals, every contact's
+ * nodes, pair, info, residual and tangent if computed), flattened into buf
+ * (at most cap bytes) for bitwise comparison. Returns the bytes used. */
+size_t tst_model_record(const b2b_model *m, int with_tangent, unsigned char *buf, size_t cap);
+
+/* Moves every node of the scene by step * v (v: 3 per node). */
+void tst_scene_move(tst_scene *sc, const double *v, double step);
