@@ -28,6 +28,20 @@
  *                                           frictionless (and costs nothing)
  *   "tangential_penalty" real  (required if friction > 0) eps_T > 0, the
  *                                           stick stiffness (force per length)
+ *   "tangent"            int   B2B_TANGENT_EXACT  which tangent b2b_pair_eval
+ *                                           (and the contact model) returns,
+ *                                           B2B_TANGENT_* (the residual is
+ *                                           the same for all):
+ *     EXACT      the exact derivative of the residual (below)
+ *     SYMMETRIC  its symmetric part (K + K^T)/2, for hosts with symmetric
+ *                solvers (the same as EXACT without friction)
+ *     MAIN       the main term only, -f_N' G G^T with G = dg/dX (what 4C calls
+ *                the basic stiffness): no geometric terms, no friction part;
+ *                cheapest, convergence no longer quadratic
+ *     FD         central finite differences of the residual, computed inside
+ *                the library (48 residual evaluations, step 1e-6 of the
+ *                segments' length, the old history held fixed): a reference
+ *                and a fallback, about 20x the cost of EXACT
  *
  * Finalize fails with B2B_ERR_STATE if a required option is missing.
  *
@@ -199,6 +213,14 @@ enum {
   B2B_INFO_DISSIPATION = 24     /* energy dissipated by slip in this step, >= 0 */
 };
 #define B2B_PAIR_INFO_LEN 32 /* entries 25..31 are reserved (written as 0) */
+
+/* Tangent options ("tangent"). Values are fixed. */
+enum {
+  B2B_TANGENT_EXACT = 0,
+  B2B_TANGENT_SYMMETRIC = 1,
+  B2B_TANGENT_MAIN = 2,
+  B2B_TANGENT_FD = 3
+};
 
 /* Friction state of a pair (info[B2B_INFO_FRICTION_STATE]). Values are fixed. */
 enum { B2B_FRICTION_NONE = 0, B2B_FRICTION_STICK = 1, B2B_FRICTION_SLIP = 2 };

@@ -21,7 +21,7 @@ bool is(const char* key, const char* name) { return std::strcmp(key, name) == 0;
 const char kRealKeys[] =
     "\"penalty\", \"regularization_gap\", \"parallel_angle\", \"friction\", "
     "\"tangential_penalty\"";
-const char kIntKeys[] = "\"law\", \"warm_start\", \"max_iterations\"";
+const char kIntKeys[] = "\"law\", \"warm_start\", \"max_iterations\", \"tangent\"";
 
 int check_settable(const Reporter& r, const b2b_params* params, const char* key) {
   if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
@@ -103,6 +103,11 @@ int b2b_params_set_int(b2b_params* params, const char* key, int value, char* err
       if (value != 0 && value != 1)
         return r.fail(B2B_ERR_RANGE, "\"warm_start\" = %d must be 0 or 1", value);
       p.warm_start = value;
+    } else if (is(key, "tangent")) {
+      if (value < B2B_TANGENT_EXACT || value > B2B_TANGENT_FD)
+        return r.fail(B2B_ERR_UNKNOWN_KIND, "unknown \"tangent\" %d (B2B_TANGENT_* are 0 .. 3)",
+                      value);
+      p.tangent = value;
     } else if (is(key, "max_iterations")) {
       if (value < 1 || value > 100000)
         return r.fail(B2B_ERR_RANGE, "\"max_iterations\" = %d must be in 1 .. 100000", value);
@@ -154,6 +159,8 @@ int b2b_params_get_int(const b2b_params* params, const char* key, int* value, ch
       *value = p.warm_start;
     else if (is(key, "max_iterations"))
       *value = p.max_iterations;
+    else if (is(key, "tangent"))
+      *value = p.tangent;
     else
       return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%s\" (integer keys: %s)", key,
                     kIntKeys);

@@ -70,6 +70,7 @@ class Updater {
   bool rebuilt_ = false;
   std::vector<int> slot_;                 // segment -> index into built_ (-1: not built)
   std::vector<curve::Segment> built_;
+  std::vector<double> built_X_;           // their patches, 12 each (for the FD tangent)
   std::vector<Item> items_;
   std::vector<double> tangents_;
   std::vector<double> fresh_;             // zeros: a fresh history
@@ -89,8 +90,10 @@ class Updater {
   Problem build_one(int s);
   pair::SegmentRef ref(int s) const {
     const SegmentInfo& info = m_.table_.segment(s);
-    return pair::SegmentRef{&built_[slot_[s]], info.kind, info.start_rule, info.end_rule,
-                            info.radius};
+    static const double kNoTangents[6] = {0, 0, 0, 0, 0, 0};
+    return pair::SegmentRef{&built_[slot_[s]], info.kind,   info.start_rule,
+                            info.end_rule,     info.radius, &built_X_[12 * slot_[s]],
+                            kNoTangents};
   }
   void evaluate(Item& item, double* K) const;
   Problem evaluate_all();
@@ -232,6 +235,8 @@ Problem Updater::build_one(int s) {
   Problem pb;
   slot_[s] = static_cast<int>(built_.size());
   built_.emplace_back();
+  built_X_.resize(12 * built_.size());
+  gather_patch(m_.table_.segment(s), cur_.data(), m_.used_index_, &built_X_[12 * slot_[s]]);
   const curve::Failure f =
       build_segment(m_.table_.segment(s), cur_.data(), m_.used_index_, built_.back(), true);
   if (f.status) {
@@ -259,7 +264,11 @@ Problem Updater::build_segments() {
   if (nn == 0) return Problem();
   built_.assign(nn, curve::Segment());
   built_.reserve(nn + 64);  // handovers add a few
-  for (int k = 0; k < nn; ++k) slot_[need[k]] = k;
+  built_X_.assign(12 * static_cast<size_t>(nn), 0.0);
+  for (int k = 0; k < nn; ++k) {
+    slot_[need[k]] = k;
+    gather_patch(m_.table_.segment(need[k]), cur_.data(), m_.used_index_, &built_X_[12 * k]);
+  }
   std::vector<curve::Failure> fail(nn);
   const SegmentInfo* info = &m_.table_.segment(0);
   const double* cur = cur_.data();

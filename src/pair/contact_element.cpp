@@ -9,6 +9,7 @@
 #include "friction.hpp"
 #include "normal_law.hpp"
 #include "tangent_assembly.hpp"
+#include "tangent_options.hpp"
 
 namespace b2b {
 namespace pair {
@@ -35,8 +36,10 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
     fail.beam = 1;
     return fail;
   }
-  evaluate_built(params, SegmentRef{&sa, A.kind, A.start_rule, A.end_rule, A.radius},
-                 SegmentRef{&sb, B.kind, B.start_rule, B.end_rule, B.radius}, hist_old, out, K);
+  evaluate_built(params,
+                 SegmentRef{&sa, A.kind, A.start_rule, A.end_rule, A.radius, A.X, A.unit_tangents},
+                 SegmentRef{&sb, B.kind, B.start_rule, B.end_rule, B.radius, B.X, B.unit_tangents},
+                 hist_old, out, K);
   return fail;
 }
 
@@ -105,9 +108,25 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
                  !all_finite(out.history, hist_len);
   if (!K) return;
 
-  // Stage 3: the tangent.
+  // Stage 3: the tangent, as the "tangent" option asks.
+  if (params.tangent == B2B_TANGENT_MAIN) {
+    main_term(law.slope, PA, PB, k.n, K);
+    info[B2B_INFO_SYMMETRIC] = 1.0;
+    out.overflow = out.overflow || !all_finite(K, kNdof * kNdof);
+    return;
+  }
+  if (params.tangent == B2B_TANGENT_FD && A.X && B.X) {
+    fd_tangent(params, A, B, hist_old, K);
+    info[B2B_INFO_SYMMETRIC] = 0.0;
+    out.overflow = out.overflow || !all_finite(K, kNdof * kNdof);
+    return;
+  }
   const TangentResult t = assemble_tangent(params, A, B, k, law, fc, fr, PA, PAd, PB, PBd, K);
   if (!t.symmetric) info[B2B_INFO_SYMMETRIC] = 0.0;
+  if (params.tangent == B2B_TANGENT_SYMMETRIC && !t.symmetric) {
+    symmetrize(K);
+    info[B2B_INFO_SYMMETRIC] = 1.0;
+  }
   out.overflow = out.overflow || !t.finite;
 }
 

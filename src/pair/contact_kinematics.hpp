@@ -16,6 +16,10 @@ struct SegmentRef {
   const curve::Segment* seg;
   int kind, start_rule, end_rule;
   double radius;
+  // The patch (12 coordinates) and unit host end tangents it was built from:
+  // read only by the finite-difference tangent (B2B_TANGENT_FD).
+  const double* X = nullptr;
+  const double* unit_tangents = nullptr;
 };
 
 struct PointState {

@@ -17,6 +17,7 @@ struct Params {
   double friction = 0.0;  // Coulomb coefficient mu
   double tangential_penalty = 0.0;
   bool tangential_penalty_set = false;
+  int tangent = 0;  // B2B_TANGENT_*
   bool finalized = false;
   // derived by finalize
   double sin_parallel_angle = 0.0;

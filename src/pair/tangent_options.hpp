@@ -1,0 +1,26 @@
+// The tangents other than the exact one ("tangent" option, B2B_TANGENT_*):
+// its symmetric part, the main term alone, and central finite differences of
+// the residual. The exact one is tangent_assembly.hpp's.
+#pragma once
+
+#include "contact_kinematics.hpp"
+#include "params.hpp"
+
+namespace b2b {
+namespace pair {
+
+// K = (K + K^T) / 2 (24 x 24, leading dimension 24).
+void symmetrize(double* K);
+
+// K = -slope G G^T with G = [P_A^T n; -P_B^T n] (the main term).
+void main_term(double slope, const double* PA, const double* PB, const double* n, double* K);
+
+// K(:, c) = (r(X + h e_c) - r(X - h e_c)) / (2 h) on the columns of slots the
+// segments read (the rest zero), h = 1e-6 of the mean chord, hist_old held
+// fixed. Needs the segments' patches (SegmentRef::X); a column whose
+// perturbed patch cannot be built keeps what K held.
+void fd_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
+                const double* hist_old, double* K);
+
+}  // namespace pair
+}  // namespace b2b
