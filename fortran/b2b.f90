@@ -11,6 +11,11 @@
 !>              b2b_params_set_real, b2b_params_set_int, b2b_params_get_real,
 !>              b2b_params_get_int, b2b_params_finalize, b2b_params_history_size;
 !>              b2b_pair_eval (with Coulomb friction), b2b_pair_history_handover
+!>  * model:    type(b2b_model) with b2b_model_create, _destroy, _add_beam,
+!>              _set_group_pair, _set_self_contact, _set_real, _set_int,
+!>              _finalize, _update, _contact_count, _get_contact, _add_residual,
+!>              _add_tangent_dense, _add_tangent_banded, _tangent_coo, _commit,
+!>              _revert, _save_size, _save, _restore, _stats
 !>
 !> Conventions of the wrappers:
 !>  * Arrays are assumed-shape and must be contiguous (sections are copied in
@@ -31,18 +36,29 @@
 !>  * Integer arguments are default integers and are converted to C int.
 module b2b
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_ptr, c_null_ptr, &
-                                         c_null_char, c_loc, c_f_pointer, c_associated
+                                         c_null_char, c_loc, c_f_pointer, c_associated, &
+                                         c_int64_t, c_int8_t
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   private
 
   include 'b2b_constants.inc'
 
+  ! The kinds of the module's interface, so that `use b2b` is all a caller
+  ! needs to declare its arguments (real(c_double), integer(c_int64_t) ...).
+  public :: c_double, c_int, c_int64_t, c_int8_t
   public :: b2b_strerror, b2b_version, b2b_abi_version
   public :: b2b_segment_eval, b2b_beam_segment_count, b2b_beam_segment_patch
   public :: b2b_params_create, b2b_params_destroy, b2b_params_set_real, b2b_params_set_int
   public :: b2b_params_get_real, b2b_params_get_int, b2b_params_finalize
   public :: b2b_params_history_size, b2b_pair_eval, b2b_pair_history_handover
+  public :: b2b_model_create, b2b_model_destroy, b2b_model_add_beam, b2b_model_set_group_pair
+  public :: b2b_model_set_self_contact, b2b_model_set_real, b2b_model_set_int
+  public :: b2b_model_finalize, b2b_model_update, b2b_model_contact_count
+  public :: b2b_model_get_contact, b2b_model_add_residual, b2b_model_add_tangent_dense
+  public :: b2b_model_add_tangent_banded, b2b_model_tangent_coo, b2b_model_commit
+  public :: b2b_model_revert, b2b_model_save_size, b2b_model_save, b2b_model_restore
+  public :: b2b_model_stats
 
   !> Contact parameters (b2b_params in C): an opaque handle, null until
   !> b2b_params_create. Set options by key, finalize, then pass it to
@@ -50,6 +66,17 @@ module b2b
   type, public :: b2b_params
     private
     type(c_ptr) :: ptr = c_null_ptr
+  end type
+
+  !> Contact model (b2b_model in C): an opaque handle, null until
+  !> b2b_model_create; free it with b2b_model_destroy. Copies share the C
+  !> object: destroy it once.
+  type, public :: b2b_model
+    private
+    type(c_ptr) :: ptr = c_null_ptr
+    ! The host's node count once finalized: the assembly wrappers check the
+    ! columns of eq against it (the C functions trust the caller's array).
+    integer :: n_nodes = -1
   end type
 
   interface
@@ -220,6 +247,235 @@ module b2b
       real(c_double), intent(in) :: hist_from(*)
       real(c_double), intent(inout) :: hist_to(*)
       integer(c_int), value :: hist_len
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+  end interface
+
+  ! ------------------------------------------------------ contact model (C)
+  interface
+    function c_b2b_model_create(model, errmsg, errmsg_len) bind(C, name='b2b_model_create') &
+        result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), intent(inout) :: model
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_destroy(model) bind(C, name='b2b_model_destroy') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), intent(inout) :: model
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_beam(model, nodes, n_nodes, closed, radius, kind, group, beam, &
+                                  errmsg, errmsg_len) bind(C, name='b2b_model_add_beam') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: nodes(*)
+      integer(c_int), value :: n_nodes, closed, kind, group
+      real(c_double), value :: radius
+      integer(c_int), intent(inout) :: beam
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_set_group_pair(model, ga, gb, params, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_group_pair') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model, params
+      integer(c_int), value :: ga, gb
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_set_self_contact(model, beam, on, exclusion_length, errmsg, &
+                                          errmsg_len) bind(C, name='b2b_model_set_self_contact') &
+        result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), value :: beam, on
+      real(c_double), value :: exclusion_length
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_set_real(model, key, value, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_real') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: key(*)
+      real(c_double), value :: value
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_set_int(model, key, value, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_int') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: key(*)
+      integer(c_int), value :: value
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_finalize(model, n_nodes, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_finalize') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_nodes
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_update(model, x, ldx, n_cols, want_tangent, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_update') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      real(c_double), intent(in) :: x(*)
+      integer(c_int), value :: ldx, n_cols, want_tangent
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_contact_count(model, n, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_contact_count') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: n
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_get_contact(model, k, nodes, pair, info, residual, tangent, ldk, &
+                                     errmsg, errmsg_len) bind(C, name='b2b_model_get_contact') &
+        result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model, nodes, pair, info, residual, tangent
+      integer(c_int), value :: k, ldk
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_residual(model, eq, ldeq, eq_base, n_eq, f, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_add_residual') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      real(c_double), intent(inout) :: f(*)
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_tangent_dense(model, eq, ldeq, eq_base, n_eq, K, ldk, errmsg, &
+                                           errmsg_len) bind(C, name='b2b_model_add_tangent_dense') &
+        result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq, ldk
+      real(c_double), intent(inout) :: K(*)
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_tangent_banded(model, eq, ldeq, eq_base, n_eq, kl, ku, AB, ldab, &
+                                            errmsg, errmsg_len) &
+        bind(C, name='b2b_model_add_tangent_banded') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq, kl, ku, ldab
+      real(c_double), intent(inout) :: AB(*)
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_tangent_coo(model, eq, ldeq, eq_base, n_eq, nnz, rows, cols, values, &
+                                     capacity, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_tangent_coo') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model, rows, cols, values
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq, capacity
+      integer(c_int), intent(inout) :: nnz
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_commit(model, errmsg, errmsg_len) bind(C, name='b2b_model_commit') &
+        result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_revert(model, errmsg, errmsg_len) bind(C, name='b2b_model_revert') &
+        result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_save_size(model, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_save_size') result(st)
+      import :: c_int, c_ptr, c_char, c_int64_t
+      type(c_ptr), value :: model
+      integer(c_int64_t), intent(inout) :: size
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_save(model, buffer, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_save') result(st)
+      import :: c_int, c_ptr, c_char, c_int64_t, c_int8_t
+      type(c_ptr), value :: model
+      integer(c_int8_t), intent(inout) :: buffer(*)
+      integer(c_int64_t), value :: size
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_restore(model, buffer, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_restore') result(st)
+      import :: c_int, c_ptr, c_char, c_int64_t, c_int8_t
+      type(c_ptr), value :: model
+      integer(c_int8_t), intent(in) :: buffer(*)
+      integer(c_int64_t), value :: size
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_stats(model, counts, totals, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_stats') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: counts(*)
+      real(c_double), intent(inout) :: totals(*)
       character(kind=c_char), intent(inout) :: errmsg(*)
       integer(c_int), value :: errmsg_len
       integer(c_int) :: st
@@ -724,6 +980,540 @@ contains
                                        ptt, h0, h1, 0_c_int, buf, int(size(buf), c_int))
     end if
     call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
+  ! ------------------------------------------------------- contact model
+
+  !> Creates a contact model (b2b_model in C; the contract is in the C header
+  !> b2b_model.h). Its messages speak Fortran numbers (1-based beams, nodes,
+  !> segments, contacts). model must be null (never created, or destroyed).
+  subroutine b2b_model_create(model, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_create'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    type(c_ptr) :: p
+    integer(c_int) :: st
+    if (c_associated(model%ptr)) then
+      call finish_text(me, int(B2B_ERR_STATE, c_int), me // ': model already holds a ' // &
+                       'handle (b2b_model_destroy it first)', ierr, errmsg)
+      return
+    end if
+    buf = c_null_char
+    p = c_null_ptr
+    st = c_b2b_model_create(p, buf, int(size(buf), c_int))
+    if (st == B2B_OK) then
+      model%ptr = p
+      st = c_b2b_model_set_int(p, 'message_base' // c_null_char, 1_c_int, buf, int(size(buf), c_int))
+    end if
+    call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Frees the model and nulls the handle; a null handle is a no-op.
+  subroutine b2b_model_destroy(model, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    integer(c_int) :: st
+    st = c_b2b_model_destroy(model%ptr)
+    model%ptr = c_null_ptr
+    call finish('b2b_model_destroy', st, blank_message(), ierr, errmsg)
+  end subroutine
+
+  !> Adds a beam: nodes(:) the host's node numbers (1-based) along it, closed
+  !> .true. for a ring (do not repeat the first node), radius > 0, kind
+  !> B2B_CURVE_*, group >= 0 (the host's contact group). beam: its number (1, 2, ...).
+  subroutine b2b_model_add_beam(model, nodes, closed, radius, kind, group, beam, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer, intent(in) :: nodes(:)
+    logical, intent(in) :: closed
+    real(c_double), intent(in) :: radius
+    integer, intent(in) :: kind, group
+    integer, intent(inout) :: beam
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, cbeam, cnodes(max(size(nodes), 1))
+    buf = c_null_char
+    cbeam = 0
+    cnodes = 0
+    cnodes(1:size(nodes)) = int(nodes - 1, c_int)
+    st = c_b2b_model_add_beam(model%ptr, cnodes, int(size(nodes), c_int), c_flag(closed), &
+                              radius, int(kind, c_int), int(group, c_int), cbeam, buf, &
+                              int(size(buf), c_int))
+    if (st == B2B_OK) beam = int(cbeam) + 1
+    call finish('b2b_model_add_beam', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Groups ga and gb (host group numbers, either order; ga = gb for beams of
+  !> one group) touch with the finalized parameter set params (copied).
+  subroutine b2b_model_set_group_pair(model, ga, gb, params, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer, intent(in) :: ga, gb
+    type(b2b_params), intent(in) :: params
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_model_set_group_pair(model%ptr, int(ga, c_int), int(gb, c_int), params%ptr, buf, &
+                                    int(size(buf), c_int))
+    call finish('b2b_model_set_group_pair', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Self-contact of beam (1-based) on or off; exclusion_length (optional,
+  !> default 4 r): arc length within which its own segments are not paired.
+  subroutine b2b_model_set_self_contact(model, beam, on, exclusion_length, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer, intent(in) :: beam
+    logical, intent(in) :: on
+    real(c_double), intent(in), optional :: exclusion_length
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    real(c_double) :: excl
+    excl = -1.0_c_double
+    if (present(exclusion_length)) excl = exclusion_length
+    buf = c_null_char
+    st = c_b2b_model_set_self_contact(model%ptr, int(beam - 1, c_int), c_flag(on), excl, buf, &
+                                      int(size(buf), c_int))
+    call finish('b2b_model_set_self_contact', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Sets a real option of the model ("search_margin").
+  subroutine b2b_model_set_real(model, key, value, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    character(len=*), intent(in) :: key
+    real(c_double), intent(in) :: value
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_model_set_real(model%ptr, trim(key) // c_null_char, value, buf, int(size(buf), c_int))
+    call finish('b2b_model_set_real', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Sets an integer option of the model ("threads", "max_handover_hops").
+  subroutine b2b_model_set_int(model, key, value, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    character(len=*), intent(in) :: key
+    integer, intent(in) :: value
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_model_set_int(model%ptr, trim(key) // c_null_char, int(value, c_int), buf, &
+                             int(size(buf), c_int))
+    call finish('b2b_model_set_int', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Builds the segment tables; the host has n_nodes nodes (numbers 1 .. n_nodes).
+  subroutine b2b_model_finalize(model, n_nodes, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer, intent(in) :: n_nodes
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_model_finalize(model%ptr, int(n_nodes, c_int), buf, int(size(buf), c_int))
+    if (st == B2B_OK) model%n_nodes = n_nodes
+    call finish('b2b_model_finalize', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> One Newton iteration: x(ldx, n) the current coordinates of the host's
+  !> nodes (rows 1..3: x, y, z; ldx = size(x, 1) >= 3, so FEAP's x(ndm, numnp)
+  !> works as is), n = size(x, 2) >= n_nodes. want_tangent (default .true.):
+  !> .false. skips the tangents.
+  subroutine b2b_model_update(model, x, want_tangent, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    real(c_double), intent(in), contiguous :: x(:, :)
+    logical, intent(in), optional :: want_tangent
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, want
+    real(c_double) :: dummy(3)
+    want = 1
+    if (present(want_tangent)) want = c_flag(want_tangent)
+    buf = c_null_char
+    if (size(x) > 0) then
+      st = c_b2b_model_update(model%ptr, x, int(size(x, 1), c_int), int(size(x, 2), c_int), &
+                              want, buf, int(size(buf), c_int))
+    else
+      dummy = 0
+      st = c_b2b_model_update(model%ptr, dummy, int(size(x, 1), c_int), 0_c_int, want, buf, &
+                              int(size(buf), c_int))
+    end if
+    call finish('b2b_model_update', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> The number of active contacts of the last update.
+  subroutine b2b_model_contact_count(model, n, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer, intent(inout) :: n
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, cn
+    buf = c_null_char
+    cn = 0
+    st = c_b2b_model_contact_count(model%ptr, cn, buf, int(size(buf), c_int))
+    if (st == B2B_OK) n = int(cn)
+    call finish('b2b_model_contact_count', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Contact k (1 .. count) of the last update; every output is optional:
+  !>   nodes(8)        host nodes (1-based) of A's patch slots, then B's; 0: no node
+  !>   pair(4)         beam A, segment A, beam B, segment B (1-based)
+  !>   info(32)        as b2b_pair_eval: the C entry info[k] is info(k + 1)
+  !>   residual(24)    the element residual on the 24 coordinates of nodes
+  !>   tangent(ldk,24) its tangent (ldk >= 24), if the update computed one
+  subroutine b2b_model_get_contact(model, k, nodes, pair, info, residual, tangent, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer, intent(in) :: k
+    integer, intent(inout), optional :: nodes(:), pair(:)
+    real(c_double), intent(inout), contiguous, target, optional :: info(:), residual(:)
+    real(c_double), intent(inout), contiguous, target, optional :: tangent(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_get_contact'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int), target :: cnodes(8), cpair(4)
+    type(c_ptr) :: pn, pp, pi, pr, pk
+    integer(c_int) :: st, ldk
+    pn = c_null_ptr
+    pp = c_null_ptr
+    pi = c_null_ptr
+    pr = c_null_ptr
+    pk = c_null_ptr
+    ldk = 24
+    if (present(nodes)) then
+      if (.not. shape_is(shape(nodes), [8])) then
+        call finish_size(me, 'nodes', shape(nodes), [8], ierr, errmsg)
+        return
+      end if
+      pn = c_loc(cnodes)
+    end if
+    if (present(pair)) then
+      if (.not. shape_is(shape(pair), [4])) then
+        call finish_size(me, 'pair', shape(pair), [4], ierr, errmsg)
+        return
+      end if
+      pp = c_loc(cpair)
+    end if
+    if (present(info)) then
+      if (.not. shape_is(shape(info), [B2B_PAIR_INFO_LEN])) then
+        call finish_size(me, 'info', shape(info), [B2B_PAIR_INFO_LEN], ierr, errmsg)
+        return
+      end if
+      pi = c_loc(info)
+    end if
+    if (present(residual)) then
+      if (.not. shape_is(shape(residual), [B2B_PAIR_NDOF])) then
+        call finish_size(me, 'residual', shape(residual), [B2B_PAIR_NDOF], ierr, errmsg)
+        return
+      end if
+      pr = c_loc(residual)
+    end if
+    if (present(tangent)) then
+      if (size(tangent, 1) < B2B_PAIR_NDOF .or. size(tangent, 2) /= B2B_PAIR_NDOF) then
+        call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': tangent has shape (' // &
+                         shape_text(shape(tangent)) // '), expected (ldk,24) with ldk >= 24', &
+                         ierr, errmsg)
+        return
+      end if
+      pk = c_loc(tangent)
+      ldk = int(size(tangent, 1), c_int)
+    end if
+    buf = c_null_char
+    st = c_b2b_model_get_contact(model%ptr, int(k - 1, c_int), pn, pp, pi, pr, pk, ldk, buf, &
+                                 int(size(buf), c_int))
+    if (st == B2B_OK .and. present(nodes)) nodes = int(cnodes) + 1
+    if (st == B2B_OK .and. present(pair)) pair = int(cpair) + 1
+    call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
+  !> f(e) += the contacts' residuals, through eq(ldeq, n_nodes) (ldeq >= 3):
+  !> the host's equation numbers of node k's x, y, z dofs in eq(1:3, k), 1-based,
+  !> <= 0 for a constrained dof (a FEAP-style id(ndf, numnp) works as is);
+  !> n_eq = size(f).
+  subroutine b2b_model_add_residual(model, eq, f, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer, intent(in) :: eq(:, :)
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int), allocatable :: ceq(:, :)
+    real(c_double) :: dummy(1)
+    if (.not. eq_fits(model, eq)) then
+      call finish_text('b2b_model_add_residual', int(B2B_ERR_SIZE, c_int), 'b2b_model_add_residual: eq has shape (' // &
+                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' // &
+                       trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, errmsg)
+      return
+    end if
+    call c_equations(eq, ceq)
+    buf = c_null_char
+    if (size(f) > 0) then
+      st = c_b2b_model_add_residual(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                    int(size(f), c_int), f, buf, int(size(buf), c_int))
+    else
+      st = c_b2b_model_add_residual(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, 0_c_int, &
+                                    dummy, buf, int(size(buf), c_int))
+    end if
+    call finish('b2b_model_add_residual', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> K(e_r, e_c) += the contacts' tangents (a dense matrix; n_eq = size(K, 2),
+  !> size(K, 1) >= n_eq); eq as for b2b_model_add_residual.
+  subroutine b2b_model_add_tangent_dense(model, eq, K, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer, intent(in) :: eq(:, :)
+    real(c_double), intent(inout), contiguous :: K(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int), allocatable :: ceq(:, :)
+    if (.not. eq_fits(model, eq)) then
+      call finish_text('b2b_model_add_tangent_dense', int(B2B_ERR_SIZE, c_int), 'b2b_model_add_tangent_dense: eq has shape (' // &
+                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' // &
+                       trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, errmsg)
+      return
+    end if
+    call c_equations(eq, ceq)
+    buf = c_null_char
+    st = c_b2b_model_add_tangent_dense(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                       int(size(K, 2), c_int), K, int(size(K, 1), c_int), buf, &
+                                       int(size(buf), c_int))
+    call finish('b2b_model_add_tangent_dense', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Adds the contacts' tangents into AB(ldab, n_eq), LAPACK's general band
+  !> storage for dgbsv with kl sub- and ku superdiagonals (ldab >= 2 kl + ku + 1:
+  !> K(i, j) is AB(kl + ku + 1 + i - j, j)); eq as for b2b_model_add_residual.
+  !> An entry outside the band is B2B_ERR_RANGE, and nothing is added.
+  subroutine b2b_model_add_tangent_banded(model, eq, kl, ku, AB, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer, intent(in) :: eq(:, :)
+    integer, intent(in) :: kl, ku
+    real(c_double), intent(inout), contiguous :: AB(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int), allocatable :: ceq(:, :)
+    if (.not. eq_fits(model, eq)) then
+      call finish_text('b2b_model_add_tangent_banded', int(B2B_ERR_SIZE, c_int), 'b2b_model_add_tangent_banded: eq has shape (' // &
+                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' // &
+                       trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, errmsg)
+      return
+    end if
+    call c_equations(eq, ceq)
+    buf = c_null_char
+    st = c_b2b_model_add_tangent_banded(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                        int(size(AB, 2), c_int), int(kl, c_int), int(ku, c_int), &
+                                        AB, int(size(AB, 1), c_int), buf, int(size(buf), c_int))
+    call finish('b2b_model_add_tangent_banded', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> The tangent as COO triplets in the host's 1-based equation numbers
+  !> (duplicates are to be summed). Without rows, cols and values only nnz is
+  !> set (the size query); with them, each must hold at least nnz entries.
+  subroutine b2b_model_tangent_coo(model, eq, n_eq, nnz, rows, cols, values, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer, intent(in) :: eq(:, :)
+    integer, intent(in) :: n_eq
+    integer, intent(inout) :: nnz
+    integer(c_int), intent(inout), contiguous, target, optional :: rows(:), cols(:)
+    real(c_double), intent(inout), contiguous, target, optional :: values(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_tangent_coo'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, cnnz, capacity
+    integer(c_int), allocatable :: ceq(:, :)
+    type(c_ptr) :: pr, pc, pv
+    pr = c_null_ptr
+    pc = c_null_ptr
+    pv = c_null_ptr
+    capacity = 0
+    if (present(rows) .or. present(cols) .or. present(values)) then
+      if (.not. (present(rows) .and. present(cols) .and. present(values))) then
+        call finish_text(me, int(B2B_ERR_NULL, c_int), me // ': give rows, cols and values ' // &
+                         'together (or none of them for the size query)', ierr, errmsg)
+        return
+      end if
+      capacity = int(min(size(rows), size(cols), size(values)), c_int)
+      if (capacity > 0) then
+        pr = c_loc(rows)
+        pc = c_loc(cols)
+        pv = c_loc(values)
+      end if
+    end if
+    if (.not. eq_fits(model, eq)) then
+      call finish_text('b2b_model_tangent_coo', int(B2B_ERR_SIZE, c_int), 'b2b_model_tangent_coo: eq has shape (' // &
+                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' // &
+                       trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, errmsg)
+      return
+    end if
+    call c_equations(eq, ceq)
+    buf = c_null_char
+    cnnz = 0
+    if (present(rows) .and. capacity == 0) then
+      ! no room: ask for the count and report the size like the library would
+      st = c_b2b_model_tangent_coo(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                   int(n_eq, c_int), cnnz, c_null_ptr, c_null_ptr, c_null_ptr, &
+                                   0_c_int, buf, int(size(buf), c_int))
+      if (st == B2B_OK .and. cnnz > 0) then
+        call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': rows, cols and values are ' // &
+                         'empty but the tangent has ' // trim(int_text(int(cnnz))) // ' entries', &
+                         ierr, errmsg)
+        return
+      end if
+    else
+      st = c_b2b_model_tangent_coo(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                   int(n_eq, c_int), cnnz, pr, pc, pv, capacity, buf, &
+                                   int(size(buf), c_int))
+    end if
+    if (st == B2B_OK) nnz = int(cnnz)
+    call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Accepts the state of the last update (a converged step).
+  subroutine b2b_model_commit(model, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_model_commit(model%ptr, buf, int(size(buf), c_int))
+    call finish('b2b_model_commit', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Returns to the last commit (a cut-back).
+  subroutine b2b_model_revert(model, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    buf = c_null_char
+    st = c_b2b_model_revert(model%ptr, buf, int(size(buf), c_int))
+    call finish('b2b_model_revert', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Bytes b2b_model_save needs for the committed state.
+  subroutine b2b_model_save_size(model, nbytes, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer(c_int64_t), intent(inout) :: nbytes
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int64_t) :: n
+    buf = c_null_char
+    n = 0
+    st = c_b2b_model_save_size(model%ptr, n, buf, int(size(buf), c_int))
+    if (st == B2B_OK) nbytes = n
+    call finish('b2b_model_save_size', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> The committed state into buffer (at least b2b_model_save_size bytes).
+  subroutine b2b_model_save(model, buffer, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer(c_int8_t), intent(inout), contiguous :: buffer(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int8_t) :: dummy(1)
+    buf = c_null_char
+    if (size(buffer) > 0) then
+      st = c_b2b_model_save(model%ptr, buffer, int(size(buffer), c_int64_t), buf, &
+                            int(size(buf), c_int))
+    else
+      st = c_b2b_model_save(model%ptr, dummy, 0_c_int64_t, buf, int(size(buf), c_int))
+    end if
+    call finish('b2b_model_save', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Restores a committed state saved by b2b_model_save from a model built the same way.
+  subroutine b2b_model_restore(model, buffer, ierr, errmsg)
+    type(b2b_model), intent(inout) :: model
+    integer(c_int8_t), intent(in), contiguous :: buffer(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int8_t) :: dummy(1)
+    buf = c_null_char
+    if (size(buffer) > 0) then
+      st = c_b2b_model_restore(model%ptr, buffer, int(size(buffer), c_int64_t), buf, &
+                               int(size(buf), c_int))
+    else
+      dummy = 0
+      st = c_b2b_model_restore(model%ptr, dummy, 0_c_int64_t, buf, int(size(buf), c_int))
+    end if
+    call finish('b2b_model_restore', st, buf, ierr, errmsg)
+  end subroutine
+
+  !> counts(16) (B2B_COUNT_*: the C entry counts[k] is counts(k + 1)) and
+  !> totals(8) (B2B_TOTAL_*) of the last update; either optional.
+  subroutine b2b_model_stats(model, counts, totals, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    integer, intent(inout), optional :: counts(:)
+    real(c_double), intent(inout), optional :: totals(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_stats'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, c(B2B_MODEL_COUNTS_LEN)
+    real(c_double) :: t(B2B_MODEL_TOTALS_LEN)
+    if (present(counts)) then
+      if (.not. shape_is(shape(counts), [B2B_MODEL_COUNTS_LEN])) then
+        call finish_size(me, 'counts', shape(counts), [B2B_MODEL_COUNTS_LEN], ierr, errmsg)
+        return
+      end if
+    end if
+    if (present(totals)) then
+      if (.not. shape_is(shape(totals), [B2B_MODEL_TOTALS_LEN])) then
+        call finish_size(me, 'totals', shape(totals), [B2B_MODEL_TOTALS_LEN], ierr, errmsg)
+        return
+      end if
+    end if
+    buf = c_null_char
+    c = 0
+    t = 0
+    st = c_b2b_model_stats(model%ptr, c, t, buf, int(size(buf), c_int))
+    if (st == B2B_OK .and. present(counts)) counts = int(c)
+    if (st == B2B_OK .and. present(totals)) totals = t
+    call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
+  !> Whether eq(ldeq, n) covers every node of a finalized model (ldeq >= 3).
+  !> An unfinalized model passes: the library reports its state.
+  logical function eq_fits(model, eq)
+    type(b2b_model), intent(in) :: model
+    integer, intent(in) :: eq(:, :)
+    eq_fits = model%n_nodes < 0 .or. (size(eq, 1) >= 3 .and. size(eq, 2) >= model%n_nodes)
+  end function
+
+  !> The host's equation numbers as C ints (a copy: the host's integers may
+  !> be of another kind).
+  subroutine c_equations(eq, ceq)
+    integer, intent(in) :: eq(:, :)
+    integer(c_int), allocatable, intent(out) :: ceq(:, :)
+    allocate (ceq(max(size(eq, 1), 1), max(size(eq, 2), 1)))
+    ceq = 0
+    ceq(1:size(eq, 1), 1:size(eq, 2)) = int(eq, c_int)
   end subroutine
 
   ! ---------------------------------------------------------------- helpers

@@ -59,6 +59,10 @@
  *                          at most n threads for this model's updates.
  *   "max_handover_hops" int  16: segments a contact may travel in one
  *                          update (along both beams together), 1 .. 1000.
+ *   "message_base"   int   0: beam, segment, node and contact numbers in
+ *                          messages are 0-based (C); 1: 1-based (the Fortran
+ *                          module sets it, so its callers read their own
+ *                          numbers). Results are always 0-based in C.
  *
  * Update (b2b_model_update)
  * -------------------------
@@ -145,7 +149,7 @@
  * restore buffer), B2B_ERR_NONFINITE (radius, coordinates, option values),
  * B2B_ERR_SIZE (a beam of too few nodes, ldx < 3, n_cols < n_nodes, ldeq < 3,
  * ldk, ldab, capacity, a replacement parameter set of another history
- * length), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a
+ * length, a restore size < 0), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a
  * segment's B2B_ERR_COINCIDENT / B2B_ERR_FOLDED. Messages name the beam,
  * segment, host node or group.
  */

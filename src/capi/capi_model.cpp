@@ -3,6 +3,7 @@
 // (src/model) does the work.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -48,9 +49,11 @@ int report_model_problem(const Reporter& r, const b2b_model* model, const md::Pr
                     "itself: call b2b_model_set_group_pair(%d, %d, ...)", pb.beam + o, pb.node,
                     pb.node, pb.node);
     case W::Coordinate:
-      return r.fail(pb.status, "node %d has %s %c coordinate (%g)", pb.node + o,
-                    pb.status == B2B_ERR_NONFINITE ? "a non-finite" : "beyond B2B_COORD_MAX an",
-                    kAxis[pb.axis], pb.value);
+      if (pb.status == B2B_ERR_NONFINITE)
+        return r.fail(pb.status, "node %d has a non-finite %c coordinate (%g)", pb.node + o,
+                      kAxis[pb.axis], pb.value);
+      return r.fail(pb.status, "node %d has its %c coordinate (%g) beyond B2B_COORD_MAX",
+                    pb.node + o, kAxis[pb.axis], pb.value);
     case W::Segment: {
       const md::SegmentInfo& s =
           model->m.table().segment(model->m.beam(pb.beam).first_segment + pb.segment);
@@ -137,11 +140,13 @@ int b2b_model_add_beam(b2b_model* model, const int* nodes, int n_nodes, int clos
     const int b = model->m.beam_count();
     if (closed != 0 && closed != 1)
       return r.fail(B2B_ERR_RANGE, "beam %d: closed is %d (0 open, 1 ring)", b + o, closed);
-    if (int st = check_kind(r, kind)) return st;
+    char beam_prefix[32];
+    std::snprintf(beam_prefix, sizeof beam_prefix, "beam %d: ", b + o);
+    if (int st = check_kind(r, kind, beam_prefix)) return st;
     const int min_nodes = b2b::curve::min_nodes(closed);
     if (n_nodes < min_nodes)
-      return r.fail(B2B_ERR_SIZE, "beam %d has %d nodes; an %s beam needs at least %d", b + o,
-                    n_nodes, closed ? "closed" : "open", min_nodes);
+      return r.fail(B2B_ERR_SIZE, "beam %d has %d nodes; %s beam needs at least %d", b + o,
+                    n_nodes, closed ? "a closed" : "an open", min_nodes);
     if (!std::isfinite(radius))
       return r.fail(B2B_ERR_NONFINITE, "beam %d: the radius is not finite (%g)", b + o, radius);
     if (!(radius > 0.0) || radius > B2B_COORD_MAX)
@@ -231,7 +236,8 @@ int b2b_model_set_real(b2b_model* model, const char* key, double value, char* er
     if (!std::isfinite(value))
       return r.fail(B2B_ERR_NONFINITE, "\"search_margin\" = %g is not finite", value);
     if (!(value > 0.0) || value > B2B_COORD_MAX)
-      return r.fail(B2B_ERR_RANGE, "\"search_margin\" = %g must be > 0", value);
+      return r.fail(B2B_ERR_RANGE, "\"search_margin\" = %g must be > 0 and <= B2B_COORD_MAX",
+                    value);
     model->m.search_margin = value;
     return B2B_OK;
   });
@@ -270,6 +276,13 @@ int b2b_model_finalize(b2b_model* model, int n_nodes, char* errmsg, int errmsg_l
     if (model->m.beam_count() == 0)
       return r.fail(B2B_ERR_STATE, "the model has no beams (b2b_model_add_beam)");
     const md::Problem pb = model->m.finalize(n_nodes);
+    if (pb.status && pb.what == md::Problem::What::NodeRange) {
+      // Worded here: the model holds no n_nodes until it is finalized.
+      const int o = model->message_base;
+      return r.fail(pb.status, "beam %d: node %d (position %d in its list) is out of range: the "
+                    "host has nodes %d .. %d", pb.beam + o, pb.node + o, pb.segment + o, o,
+                    n_nodes - 1 + o);
+    }
     if (pb.status) return report_model_problem(r, model, pb);
     return B2B_OK;
   });

@@ -1,7 +1,7 @@
 # Runs PROGRAM (ftest_stop_without_ierr) and checks that module b2b stopped it:
 # a non-zero exit status, the status and the library's message on stderr, and
 # no sign that the failing call returned.
-#   cmake -DPROGRAM=<path> [-DMODE=errmsg|handover] -P expect_stop.cmake
+#   cmake -DPROGRAM=<path> [-DMODE=errmsg|handover|model] -P expect_stop.cmake
 if(NOT DEFINED PROGRAM)
   message(FATAL_ERROR "expect_stop.cmake: PROGRAM is not set")
 endif()
@@ -9,6 +9,9 @@ set(_args "")
 set(_want "b2b error 4: b2b_segment_eval: unknown curve kind 17")
 if(MODE STREQUAL "errmsg")
   set(_args errmsg)
+elseif(MODE STREQUAL "model")
+  set(_args model)
+  set(_want "b2b error 10: b2b_model_finalize: the model has no beams")
 elseif(MODE STREQUAL "handover")
   set(_args handover)
   set(_want "b2b error 4: b2b_pair_history_handover: beam is 3: 1 (beam A) or 2 (beam B)")

@@ -7,9 +7,9 @@
 !> optional output and errmsg buffer is a type(c_ptr) passed by value: a test
 !> passes c_loc of a flat array, or c_null_ptr for an absent output or for no
 !> message (with errmsg_len 0). The C names lose their b2b_ prefix for a c_
-!> one; the C signatures are in include/b2b.h.
+!> one; the C signatures are in include/b2b/b2b*.h.
 module ftest_capi
-  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_char
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_char, c_int64_t
   implicit none
   private
 
@@ -17,6 +17,12 @@ module ftest_capi
   public :: c_params_create, c_params_destroy, c_params_set_real, c_params_set_int
   public :: c_params_finalize, c_params_history_size
   public :: c_pair_eval, c_pair_history_handover
+  public :: c_model_create, c_model_destroy, c_model_add_beam, c_model_set_group_pair
+  public :: c_model_set_self_contact, c_model_set_real, c_model_set_int, c_model_finalize
+  public :: c_model_update, c_model_contact_count, c_model_get_contact, c_model_add_residual
+  public :: c_model_add_tangent_dense, c_model_add_tangent_banded, c_model_tangent_coo
+  public :: c_model_commit, c_model_revert, c_model_save_size, c_model_save, c_model_restore
+  public :: c_model_stats
 
   interface
     function c_segment_eval(kind, start_rule, end_rule, patch, end_tangents, xi, x, dx, d2x, &
@@ -113,6 +119,228 @@ module ftest_capi
       type(c_ptr), value :: hist_from, hist_to
       integer(c_int), value :: hist_len
       type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    ! ------------------------------------------------ contact model (b2b_model)
+    ! model is the C handle (type(c_ptr), by value); node, beam, segment and
+    ! contact numbers are C's (0-based); eq arrays are C ints.
+
+    function c_model_create(model, errmsg, errmsg_len) bind(C, name='b2b_model_create') &
+        result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), intent(inout) :: model
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_destroy(model) bind(C, name='b2b_model_destroy') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), intent(inout) :: model
+      integer(c_int) :: st
+    end function
+
+    function c_model_add_beam(model, nodes, n_nodes, closed, radius, kind, group, beam, errmsg, &
+                              errmsg_len) bind(C, name='b2b_model_add_beam') result(st)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: model, nodes
+      integer(c_int), value :: n_nodes, closed
+      real(c_double), value :: radius
+      integer(c_int), value :: kind, group
+      integer(c_int), intent(inout) :: beam
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_set_group_pair(model, ga, gb, params, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_group_pair') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model
+      integer(c_int), value :: ga, gb
+      type(c_ptr), value :: params, errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_set_self_contact(model, beam, on, exclusion_length, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_self_contact') result(st)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: model
+      integer(c_int), value :: beam, on
+      real(c_double), value :: exclusion_length
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    !> key: a NUL-terminated string.
+    function c_model_set_real(model, key, value, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_real') result(st)
+      import :: c_int, c_double, c_ptr, c_char
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: key(*)
+      real(c_double), value :: value
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_set_int(model, key, value, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_int') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: key(*)
+      integer(c_int), value :: value
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_finalize(model, n_nodes, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_finalize') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_nodes
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_update(model, x, ldx, n_cols, want_tangent, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_update') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, x
+      integer(c_int), value :: ldx, n_cols, want_tangent
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_contact_count(model, n, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_contact_count') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: n
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_get_contact(model, k, nodes, pair, info, residual, tangent, ldk, errmsg, &
+                                 errmsg_len) bind(C, name='b2b_model_get_contact') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model
+      integer(c_int), value :: k
+      type(c_ptr), value :: nodes, pair, info, residual, tangent
+      integer(c_int), value :: ldk
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_add_residual(model, eq, ldeq, eq_base, n_eq, f, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_add_residual') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, eq
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      type(c_ptr), value :: f, errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_add_tangent_dense(model, eq, ldeq, eq_base, n_eq, K, ldk, errmsg, &
+                                       errmsg_len) bind(C, name='b2b_model_add_tangent_dense') &
+        result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, eq
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      type(c_ptr), value :: K
+      integer(c_int), value :: ldk
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_add_tangent_banded(model, eq, ldeq, eq_base, n_eq, kl, ku, AB, ldab, &
+                                        errmsg, errmsg_len) &
+        bind(C, name='b2b_model_add_tangent_banded') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, eq
+      integer(c_int), value :: ldeq, eq_base, n_eq, kl, ku
+      type(c_ptr), value :: AB
+      integer(c_int), value :: ldab
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_tangent_coo(model, eq, ldeq, eq_base, n_eq, nnz, rows, cols, values, &
+                                 capacity, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_tangent_coo') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, eq
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      integer(c_int), intent(inout) :: nnz
+      type(c_ptr), value :: rows, cols, values
+      integer(c_int), value :: capacity
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_commit(model, errmsg, errmsg_len) bind(C, name='b2b_model_commit') &
+        result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_revert(model, errmsg, errmsg_len) bind(C, name='b2b_model_revert') &
+        result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_save_size(model, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_save_size') result(st)
+      import :: c_int, c_ptr, c_int64_t
+      type(c_ptr), value :: model
+      integer(c_int64_t), intent(inout) :: size
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_save(model, buffer, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_save') result(st)
+      import :: c_int, c_ptr, c_int64_t
+      type(c_ptr), value :: model, buffer
+      integer(c_int64_t), value :: size
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_restore(model, buffer, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_restore') result(st)
+      import :: c_int, c_ptr, c_int64_t
+      type(c_ptr), value :: model, buffer
+      integer(c_int64_t), value :: size
+      type(c_ptr), value :: errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_stats(model, counts, totals, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_stats') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, counts, totals, errmsg
       integer(c_int), value :: errmsg_len
       integer(c_int) :: st
     end function

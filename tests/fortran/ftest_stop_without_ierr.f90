@@ -8,7 +8,8 @@
 !> Without arguments the call has neither ierr nor errmsg; with the argument
 !> "errmsg" it has errmsg but still no ierr (which must stop all the same).
 !> With the argument "handover" the failing call is b2b_pair_history_handover
-!> with beam 3 (a check of the module itself, before the C call).
+!> with beam 3 (a check of the module itself, before the C call). With the
+!> argument "model" it is b2b_model_finalize on a model without beams.
 program ftest_stop_without_ierr
   use, intrinsic :: iso_c_binding, only: c_double
   use, intrinsic :: iso_fortran_env, only: output_unit
@@ -17,6 +18,7 @@ program ftest_stop_without_ierr
 
   real(c_double) :: patch(3, 4), x(3, 3), hist(12), hist_to(12)
   type(b2b_params) :: p
+  type(b2b_model) :: m
   character(len=B2B_ERRMSG_LEN) :: msg
   character(len=16) :: arg
   integer :: i
@@ -43,6 +45,14 @@ program ftest_stop_without_ierr
                                    [B2B_CURVE_LINEAR, 0, 0], patch, hist, hist_to)
     write (output_unit, '(a)') 'ERROR: returned from a failing b2b_pair_history_handover ' // &
       'without ierr'
+    flush (output_unit)
+    stop
+  else if (arg == 'model') then
+    call b2b_model_create(m)
+    write (output_unit, '(a)') 'calling b2b_model_finalize on a model without beams and no ierr'
+    flush (output_unit)
+    call b2b_model_finalize(m, 4)
+    write (output_unit, '(a)') 'ERROR: returned from a failing b2b_model_finalize without ierr'
     flush (output_unit)
     stop
   else if (arg == 'errmsg') then
