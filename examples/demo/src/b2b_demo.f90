@@ -1,14 +1,16 @@
 !> b2b_demo: solves one scene file.
 !>   b2b_demo scene.nml [output_dir]
 !> Prints one line per load step, writes VTK and CSV files (demo_output) and
-!> exits with 0 only if every step converged; any error stops with a message
-!> and exit code 2.
+!> exits with 0 only if every step converged and the scene's &check (if any)
+!> passed; a failed check exits with 1, any error with a message and 2.
 program b2b_demo
   use demo_model, only: scene_model
   use demo_scene_reader, only: read_scene
   use demo_solver, only: solve_scene
   use demo_errors, only: fatal
   use demo_output, only: output_remove_stale
+  use demo_checks, only: check_finish
+  use demo_contact_hook, only: contact_hook_finish
   use b2b, only: b2b_version
   implicit none
   type(scene_model) :: m
@@ -33,5 +35,8 @@ program b2b_demo
   call read_scene(trim(file), m)
   if (len_trim(dir) > 0) m%out_dir = dir
   call solve_scene(m)
+  call contact_hook_finish()
   write (*, '(a)') trim(m%name) // ': complete, results in ' // trim(m%out_dir)
+  ! the scene's own check (&check): exit code 1 if it fails
+  if (.not. check_finish(m)) error stop 1
 end program b2b_demo

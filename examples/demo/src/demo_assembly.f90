@@ -4,7 +4,7 @@
 !> and f_int on every dof (fint, whose constrained entries are the reactions).
 module demo_assembly
   use demo_kinds, only: dp, ndf
-  use demo_model, only: scene_model
+  use demo_model, only: scene_model, external_force
   use demo_rotation, only: quat_to_matrix
   use demo_beam_element, only: beam_element
   use demo_linear_system, only: linear_system, sys_zero, sys_add
@@ -25,6 +25,7 @@ contains
     real(dp) :: fe(12), ke(12, 12), ta(3, 3), tb(3, 3)
     integer :: el, a, b, i, j, ei, ej, node, d
     integer :: dof_node(12), dof_d(12)
+    real(dp) :: fext(ndf, m%n_nodes)
 
     r = 0.0_dp
     fint = 0.0_dp
@@ -56,9 +57,10 @@ contains
       end if
     end do
 
+    fext = external_force(m, lam)
     do node = 1, m%n_nodes
       do d = 1, ndf
-        if (eq(d, node) > 0) r(eq(d, node)) = fint(d, node) - lam * m%fext(d, node)
+        if (eq(d, node) > 0) r(eq(d, node)) = fint(d, node) - fext(d, node)
       end do
     end do
 

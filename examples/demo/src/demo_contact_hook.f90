@@ -1,41 +1,163 @@
-!> THE CONTACT HOOK: the one place where the contact model of b2b will be
-!> coupled to this host. Every routine here is called by the solver at the
-!> point the contact model needs; today they do nothing but report, because
-!> the contact-model API (b2b_model_*) is being written concurrently.
+!> THE CONTACT HOOK: the one place where the contact model of b2b is coupled
+!> to this host, through the Fortran module b2b exactly as a user's code
+!> would call it. The host never evaluates a pair itself.
 !>
-!> What goes where (names as announced; check fortran/b2b.f90 when it lands):
 !>  * contact_hook_init: b2b_model_create; b2b_model_add_beam for every beam
-!>    (its global node numbers m%beam_first_node(b) + 0.., m%beam_closed(b),
-!>    m%beam_radius(b), the curve kind m%contact%curve, m%beam_group(b));
-!>    b2b_params with law/penalty/friction/tangential_penalty and
-!>    b2b_model_set_group_pair for every m%contact%pairs(:, k) (and each
-!>    group with itself when self_contact); b2b_model_finalize(model, n_nodes).
-!>  * contact_hook_forces, every Newton iteration, with x = m%x (3, n_nodes),
-!>    the current positions: b2b_model_update(model, x, want_tangent);
-!>    b2b_model_add_residual(model, eq(1:3, :), r) adds the contact part of
-!>    the INTERNAL force (r = f_int + f_contact - lambda f_ext here, so it is
-!>    added with a plus sign); and for the tangent, the contact stiffness
-!>    d f_contact / d x into sys (non-symmetric with friction). Couplings
-!>    of distant nodes need no preparation: sys_add records entries outside
-!>    the band and the solver widens it (or goes dense) and reassembles.
+!>    (its global node numbers, closed or not, radius, the curve kind of
+!>    &contact, its group); one b2b_params (penalty, law, regularization_gap,
+!>    friction, tangential_penalty) given to b2b_model_set_group_pair for
+!>    every pair of groups (and each group with itself, plus
+!>    b2b_model_set_self_contact per beam, with self_contact);
+!>    b2b_model_finalize(model, n_nodes).
+!>  * contact_hook_forces, every assembly, with the current positions m%x:
+!>    b2b_model_update; b2b_model_add_residual into r (the contact part of
+!>    the INTERNAL force: r = f_int + f_contact - lambda f_ext, so it is
+!>    added) and into f_int on every dof (the reactions include the contact);
+!>    the tangent with b2b_model_add_tangent_banded (or _dense). When the band
+!>    is too narrow for a contact (B2B_ERR_RANGE, nothing added), the width
+!>    the contacts need is computed from their nodes (b2b_model_get_contact)
+!>    and reported as an overflow of the linear system: the Newton loop
+!>    widens the band (or goes dense) and assembles again.
 !>  * contact_hook_commit after a converged (sub)step: b2b_model_commit.
 !>  * contact_hook_revert on a cut-back: b2b_model_revert.
+!> A failed update (e.g. a segment folded by a wild Newton iterate) is not
+!> fatal: contact_hook_failed reports it and the step is cut back.
 module demo_contact_hook
-  use demo_kinds, only: dp
+  use demo_kinds, only: dp, ndf
   use demo_model, only: scene_model
   use demo_linear_system, only: linear_system
+  use demo_errors, only: fatal, str
+  use b2b, only: b2b_model, b2b_params, b2b_params_create, b2b_params_set_real, b2b_params_set_int, &
+                 b2b_params_finalize, b2b_params_destroy, b2b_model_create, b2b_model_add_beam, &
+                 b2b_model_set_group_pair, b2b_model_set_self_contact, b2b_model_finalize, &
+                 b2b_model_update, b2b_model_contact_count, b2b_model_get_contact, b2b_model_add_residual, &
+                 b2b_model_add_tangent_banded, b2b_model_add_tangent_dense, b2b_model_commit, &
+                 b2b_model_revert, b2b_model_stats, b2b_model_destroy, &
+                 B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL, &
+                 B2B_CURVE_HERMITE_NODAL_WEIGHTED, B2B_LAW_LINEAR, B2B_LAW_QUADRATIC, B2B_ERR_RANGE
+  use, intrinsic :: iso_fortran_env, only: int64
   implicit none
   private
   public :: contact_hook_init, contact_hook_forces, contact_hook_commit, contact_hook_revert
+  public :: contact_hook_failed, contact_hook_signature, contact_hook_snapshot, contact_hook_finish
+
+  !> One active contact of the last update, as b2b_model_get_contact gives it.
+  type, public :: contact_point
+    integer :: pair(4) = 0        !< beam A, segment A, beam B, segment B (1-based)
+    integer :: nodes(8) = 0       !< host nodes of A's patch slots, then B's (0: none)
+    real(dp) :: info(32) = 0.0_dp !< B2B_INFO_*: the C entry info[k] is info(k + 1)
+  end type contact_point
+
+  !> The contacts of the last update and the model's statistics.
+  type, public :: contact_snapshot
+    integer :: n = 0
+    type(contact_point), allocatable :: c(:)
+    integer :: counts(16) = 0
+    real(dp) :: totals(8) = 0.0_dp
+  end type contact_snapshot
+
+  type(b2b_model), save :: model
+  logical, save :: debug = .false.
+  logical, save :: on = .false.        !< a model exists (contact_hook_init ran with &contact)
+  logical, save :: updated = .false.   !< an update since the last commit or revert
+  logical, save :: failed = .false.
+  character(len=512), save :: fail_msg = ''
+  type(contact_snapshot), save :: last
+  integer, allocatable, save :: eq_all(:, :)   !< every dof numbered, for the contact part of f_int
 
 contains
 
+  integer function curve_kind(name) result(k)
+    character(len=*), intent(in) :: name
+    select case (trim(name))
+    case ('linear'); k = B2B_CURVE_LINEAR
+    case ('hermite_midpoint'); k = B2B_CURVE_HERMITE_MIDPOINT
+    case ('hermite_nodal_weighted'); k = B2B_CURVE_HERMITE_NODAL_WEIGHTED
+    case default; k = B2B_CURVE_HERMITE_NODAL
+    end select
+  end function curve_kind
+
+  subroutine check(ierr, errmsg, what)
+    integer, intent(in) :: ierr
+    character(len=*), intent(in) :: errmsg, what
+    if (ierr /= 0) call fatal('contact model: ' // what // ': ' // trim(errmsg))
+  end subroutine check
+
   subroutine contact_hook_init(m)
     type(scene_model), intent(in) :: m
-    if (m%contact%enabled) then
-      write (*, '(a)') '  &contact read and validated (curve ' // trim(m%contact%curve) // ', law ' &
-        // trim(m%contact%law) // '); the contact model is not coupled yet: no contact forces in this run'
+    type(b2b_params) :: params
+    integer :: b, k, g, beam, ierr, i, node
+    integer, allocatable :: nodes(:)
+    character(len=512) :: msg
+    logical :: have_self_pair
+
+    if (on) call b2b_model_destroy(model)
+    on = .false.
+    updated = .false.
+    failed = .false.
+    last%n = 0
+    if (.not. m%contact%enabled) return
+    call get_environment_variable('B2B_DEMO_DEBUG', length=i)
+    debug = i > 0
+    call b2b_model_create(model, ierr, msg)
+    call check(ierr, msg, 'create')
+    do b = 1, m%n_beams
+      nodes = [(m%beam_first_node(b) + i, i = 0, m%beam_n_nodes(b) - 1)]
+      call b2b_model_add_beam(model, nodes, m%beam_closed(b), m%beam_radius(b), curve_kind(m%contact%curve), &
+                              m%beam_group(b), beam, ierr, msg)
+      call check(ierr, msg, 'beam ' // str(b))
+    end do
+    call b2b_params_create(params, ierr, msg)
+    call check(ierr, msg, 'parameters')
+    call b2b_params_set_real(params, 'penalty', m%contact%penalty, ierr, msg)
+    call check(ierr, msg, 'penalty')
+    if (m%contact%law == 'quadratic') then
+      call b2b_params_set_int(params, 'law', int(B2B_LAW_QUADRATIC), ierr, msg)
+      call check(ierr, msg, 'law')
+      call b2b_params_set_real(params, 'regularization_gap', m%contact%regularization_gap, ierr, msg)
+      call check(ierr, msg, 'regularization_gap')
+    else
+      call b2b_params_set_int(params, 'law', int(B2B_LAW_LINEAR), ierr, msg)
+      call check(ierr, msg, 'law')
     end if
+    if (m%contact%friction > 0.0_dp) then
+      call b2b_params_set_real(params, 'friction', m%contact%friction, ierr, msg)
+      call check(ierr, msg, 'friction')
+      call b2b_params_set_real(params, 'tangential_penalty', m%contact%tangential_penalty, ierr, msg)
+      call check(ierr, msg, 'tangential_penalty')
+    end if
+    call b2b_params_finalize(params, ierr, msg)
+    call check(ierr, msg, 'parameters')
+    do k = 1, m%contact%n_pairs
+      call b2b_model_set_group_pair(model, m%contact%pairs(1, k), m%contact%pairs(2, k), params, ierr, msg)
+      call check(ierr, msg, 'group pair ' // str(k))
+    end do
+    if (m%contact%self_contact) then
+      do b = 1, m%n_beams
+        g = m%beam_group(b)
+        have_self_pair = .false.
+        do k = 1, m%contact%n_pairs
+          if (all(m%contact%pairs(:, k) == g)) have_self_pair = .true.
+        end do
+        if (.not. have_self_pair) then
+          call b2b_model_set_group_pair(model, g, g, params, ierr, msg)
+          call check(ierr, msg, 'group pair (' // str(g) // ', ' // str(g) // ')')
+        end if
+        call b2b_model_set_self_contact(model, b, .true., ierr=ierr, errmsg=msg)
+        call check(ierr, msg, 'self-contact of beam ' // str(b))
+      end do
+    end if
+    call b2b_params_destroy(params)
+    call b2b_model_finalize(model, m%n_nodes, ierr, msg)
+    call check(ierr, msg, 'finalize')
+    if (allocated(eq_all)) deallocate (eq_all)
+    allocate (eq_all(ndf, m%n_nodes))
+    eq_all = reshape([(i, i = 1, ndf * m%n_nodes)], [ndf, m%n_nodes])
+    on = .true.
+    node = 0
+    write (*, '(a)') '  contact: curve ' // trim(m%contact%curve) // ', law ' // trim(m%contact%law) // ', penalty ' &
+      // str(m%contact%penalty) // ', friction ' // str(m%contact%friction) // trim(merge(', self-contact', &
+      '              ', m%contact%self_contact)) // ', ' // str(m%contact%n_pairs) // ' group pair(s)'
   end subroutine contact_hook_init
 
   !> Adds the contact part of the internal force to r (free dofs, numbered
@@ -46,19 +168,136 @@ contains
     logical, intent(in) :: want_tangent
     type(linear_system), intent(inout) :: sys
     real(dp), intent(inout) :: r(:), fint(:, :)
-    ! nothing yet: see the module header for the calls that go here
-    ! (the stubs' unused arguments are allowed by the CMake file)
-    if (.not. m%contact%enabled) return
+    real(dp), allocatable :: f_all(:)
+    integer :: ierr, k, need, lo, hi, s, e
+    character(len=512) :: msg
+
+    failed = .false.
+    if (.not. on) return
+    call b2b_model_update(model, m%x, want_tangent, ierr, msg)
+    if (ierr /= 0) then
+      failed = .true.
+      fail_msg = msg
+      return
+    end if
+    updated = .true.
+    call refresh()
+    call b2b_model_add_residual(model, eq, r, ierr, msg)
+    call check(ierr, msg, 'add_residual')
+    allocate (f_all(size(fint)))
+    f_all = 0.0_dp
+    call b2b_model_add_residual(model, eq_all, f_all, ierr, msg)
+    call check(ierr, msg, 'add_residual (all dofs)')
+    fint = fint + reshape(f_all, shape(fint))
+    if (.not. want_tangent) return
+    if (sys%dense) then
+      call b2b_model_add_tangent_dense(model, eq, sys%a, ierr, msg)
+      call check(ierr, msg, 'add_tangent_dense')
+    else
+      call b2b_model_add_tangent_banded(model, eq, sys%kl, sys%ku, sys%a, ierr, msg)
+      if (ierr == B2B_ERR_RANGE) then
+        ! a contact couples equations beyond the band: the width it needs
+        need = 0
+        do k = 1, last%n
+          lo = huge(1)
+          hi = 0
+          do s = 1, 8
+            if (last%c(k)%nodes(s) <= 0) cycle
+            do e = 1, 3
+              if (eq(e, last%c(k)%nodes(s)) <= 0) cycle
+              lo = min(lo, eq(e, last%c(k)%nodes(s)))
+              hi = max(hi, eq(e, last%c(k)%nodes(s)))
+            end do
+          end do
+          if (hi > 0) need = max(need, hi - lo)
+        end do
+        sys%overflow = .true.
+        sys%need = max(sys%need, need)
+      else
+        call check(ierr, msg, 'add_tangent_banded')
+      end if
+    end if
   end subroutine contact_hook_forces
+
+  !> The active contacts and statistics of the last update into `last`.
+  subroutine refresh()
+    integer :: n, k, ierr
+    character(len=512) :: msg
+    call b2b_model_contact_count(model, n, ierr, msg)
+    call check(ierr, msg, 'contact_count')
+    if (.not. allocated(last%c)) allocate (last%c(max(n, 16)))
+    if (size(last%c) < n) then
+      deallocate (last%c)
+      allocate (last%c(2 * n))
+    end if
+    last%n = n
+    do k = 1, n
+      call b2b_model_get_contact(model, k, nodes=last%c(k)%nodes, pair=last%c(k)%pair, info=last%c(k)%info, &
+                                 ierr=ierr, errmsg=msg)
+      call check(ierr, msg, 'get_contact ' // str(k))
+    end do
+    call b2b_model_stats(model, last%counts, last%totals, ierr, msg)
+    call check(ierr, msg, 'stats')
+    if (debug) write (*, '(a,16i5)') '      [contact counts]', last%counts
+    if (debug .and. n > 0) write (*, '(a,4i4,6es12.4)') '      [c1]', last%c(1)%pair, last%c(1)%info(1:2), &
+      last%c(1)%info(12:13), last%c(1)%info(3:5:2)
+  end subroutine refresh
+
+  !> .true. (with the model's message) if the last update failed.
+  logical function contact_hook_failed(why) result(f)
+    character(len=:), allocatable, intent(out) :: why
+    f = failed
+    why = 'contact update failed: ' // trim(fail_msg)
+  end function contact_hook_failed
+
+  !> A number that changes when the set of active contacts (their pairs) does.
+  integer(int64) function contact_hook_signature() result(h)
+    integer :: k, i
+    h = int(last%n, int64)
+    do k = 1, last%n
+      do i = 1, 4
+        h = modulo(h * 1000003_int64 + int(last%c(k)%pair(i), int64), 2305843009213693951_int64)
+      end do
+    end do
+  end function contact_hook_signature
+
+  !> The contacts and statistics of the last update (n = 0 before any).
+  subroutine contact_hook_snapshot(s)
+    type(contact_snapshot), intent(out) :: s
+    s%n = last%n
+    allocate (s%c(last%n))
+    if (last%n > 0) s%c = last%c(1:last%n)
+    s%counts = last%counts
+    s%totals = last%totals
+  end subroutine contact_hook_snapshot
 
   subroutine contact_hook_commit(m)
     type(scene_model), intent(in) :: m
-    if (.not. m%contact%enabled) return
+    integer :: ierr
+    character(len=512) :: msg
+    if (.not. (on .and. m%contact%enabled .and. updated)) return
+    call b2b_model_commit(model, ierr, msg)
+    call check(ierr, msg, 'commit')
+    updated = .false.
   end subroutine contact_hook_commit
 
   subroutine contact_hook_revert(m)
     type(scene_model), intent(in) :: m
-    if (.not. m%contact%enabled) return
+    integer :: ierr
+    character(len=512) :: msg
+    if (.not. (on .and. m%contact%enabled .and. updated)) return
+    call b2b_model_revert(model, ierr, msg)
+    call check(ierr, msg, 'revert')
+    updated = .false.
+    last%n = 0
   end subroutine contact_hook_revert
+
+  !> Frees the model at the end of a run.
+  subroutine contact_hook_finish()
+    if (on) call b2b_model_destroy(model)
+    on = .false.
+    updated = .false.
+    last%n = 0
+  end subroutine contact_hook_finish
 
 end module demo_contact_hook

@@ -13,6 +13,12 @@ module demo_history
     real(dp) :: u(3) = 0.0_dp          !< displacement of the monitored node
     real(dp) :: rot(3) = 0.0_dp        !< rotation vector of the monitored node
     real(dp) :: last_norm = 0.0_dp, ref = 0.0_dp
+    ! contact: active contacts, sum of f_N, sum of |T|, contacts in slip,
+    ! handover hops; convergence rate (< 0: not measurable) and whether the
+    ! active set stayed the same in the iterations it is measured on
+    integer :: n_active = 0, n_slip = 0, handovers = 0
+    real(dp) :: fn = 0.0_dp, ft = 0.0_dp, rate = -1.0_dp
+    logical :: stable = .false.
   end type step_row
 
   type, public :: iter_row

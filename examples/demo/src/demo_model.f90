@@ -24,6 +24,19 @@ module demo_model
     integer, allocatable :: pairs(:, :)      !< (2, n_pairs): contact groups that interact
   end type contact_settings
 
+  !> What the program checks at the end of a run (&check group; kind '' = none).
+  type, public :: check_settings
+    character(len=32) :: kind = ''          !< crossed_beams | cantilever_crossbar | sliding | friction_pull | many_contacts
+    integer :: beam_a = 1, beam_b = 2       !< the loaded (or moving) beam and the other one
+    real(dp) :: tolerance = 0.01_dp         !< relative tolerance of the closed form
+    real(dp) :: min_rate = 1.8_dp           !< quadratic convergence: least rate where the active set is fixed
+    integer :: min_contacts = 1             !< least number of active contacts (many_contacts)
+    integer :: min_nodes_crossed = 0        !< nodes of beam_b the contact must cross (sliding)
+  end type check_settings
+
+  !> Piecewise-linear time function of a load or motion (&load / &motion key ramp).
+  integer, parameter, public :: max_ramp_points = 16
+
   type, public :: scene_model
     character(len=name_len) :: file = ''
     character(len=name_len) :: title = ''
@@ -61,11 +74,62 @@ module demo_model
     integer :: monitor_node = 0             !< global node whose motion goes to the CSV history
 
     type(contact_settings) :: contact
+    type(check_settings) :: check
+
+    ! ramps: the factor of a load or motion as a function of the load factor
+    ! (pseudo-time) t; ramp 0 is t itself
+    integer :: n_ramps = 0
+    integer, allocatable :: ramp_n(:)       !< points of each ramp
+    real(dp), allocatable :: ramp_t(:, :), ramp_v(:, :)  !< (max_ramp_points, n_ramps)
+    integer, allocatable :: fext_ramp(:, :) !< (ndf, n_nodes) ramp of each load component
+    integer, allocatable :: presc_ramp(:, :) !< (ndf, n_nodes) ramp of each prescribed dof
 
     ! state
     real(dp), allocatable :: x(:, :)        !< (3, n_nodes) current positions
     real(dp), allocatable :: q(:, :)        !< (4, n_nodes) nodal rotations (unit quaternions)
   end type scene_model
 
-  public :: ndf
+  public :: ndf, ramp_value, external_force
+
+contains
+
+  !> The factor of ramp id at load factor t (ramp 0: t itself; constant
+  !> beyond the first and last points).
+  pure real(dp) function ramp_value(m, id, t) result(v)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: id
+    real(dp), intent(in) :: t
+    integer :: i, n
+    real(dp) :: s
+    if (id <= 0) then
+      v = t
+      return
+    end if
+    n = m%ramp_n(id)
+    if (t <= m%ramp_t(1, id)) then
+      v = m%ramp_v(1, id)
+      return
+    end if
+    v = m%ramp_v(n, id)
+    do i = 2, n
+      if (t <= m%ramp_t(i, id)) then
+        s = (t - m%ramp_t(i - 1, id)) / (m%ramp_t(i, id) - m%ramp_t(i - 1, id))
+        v = m%ramp_v(i - 1, id) + s * (m%ramp_v(i, id) - m%ramp_v(i - 1, id))
+        return
+      end if
+    end do
+  end function ramp_value
+
+  !> The external forces and moments (ndf, n_nodes) at load factor t.
+  pure function external_force(m, t) result(f)
+    type(scene_model), intent(in) :: m
+    real(dp), intent(in) :: t
+    real(dp) :: f(ndf, m%n_nodes)
+    integer :: node, d
+    do node = 1, m%n_nodes
+      do d = 1, ndf
+        f(d, node) = m%fext(d, node) * ramp_value(m, m%fext_ramp(d, node), t)
+      end do
+    end do
+  end function external_force
 end module demo_model

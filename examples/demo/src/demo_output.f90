@@ -1,9 +1,16 @@
 !> Result files of a scene, in out_dir:
 !>   <name>_NNNN.vtp   beam axes of step NNNN (VTK XML PolyData, ASCII): one
 !>                     polyline per beam, point data radius, displacement,
-!>                     rotation (rotation vector); cell data beam, group
+!>                     rotation (rotation vector); cell data beam, group.
+!>                     With contact, one vertex per active contact after the
+!>                     beam nodes (at the midpoint of the closest points),
+!>                     with point data normal_force (f_N n, the force on
+!>                     beam A of the pair; n points from B to A) and
+!>                     friction_force (-T, the friction force on beam A),
+!>                     zero on the beam nodes; vertex cells have beam = group = 0
 !>   <name>.pvd        the collection of those files by load factor
-!>   <name>_history.csv, <name>_convergence.csv
+!>   <name>_history.csv, <name>_convergence.csv,
+!>   <name>_contacts.csv (with contact: every active contact of every step)
 !> The .pvd and the CSV files are written only when the whole run succeeded,
 !> and the stale ones of an earlier run are deleted when a run starts: a
 !> failed run never leaves a result that looks complete.
@@ -13,13 +20,23 @@ module demo_output
   use demo_history, only: run_history
   use demo_rotation, only: quat_to_rotvec
   use demo_errors, only: fatal
+  use demo_contact_hook, only: contact_snapshot, contact_hook_snapshot, contact_point
   implicit none
   private
-  public :: output_begin, output_step, output_finish, output_path, output_remove_stale
+  public :: output_begin, output_step, output_finish, output_path, output_remove_stale, output_contacts
 
   integer :: n_files = 0
   real(dp), allocatable :: file_lam(:)
   character(len=256), allocatable :: file_name(:)
+
+  !> Rows of the contacts CSV, kept until the run is complete.
+  type :: contact_row
+    integer :: step = 0
+    real(dp) :: lam = 0.0_dp
+    type(contact_point) :: c
+  end type contact_row
+  integer :: n_rows = 0
+  type(contact_row), allocatable :: rows(:)
 
 contains
 
@@ -35,6 +52,9 @@ contains
     n_files = 0
     if (allocated(file_lam)) deallocate (file_lam, file_name)
     allocate (file_lam(16), file_name(16))
+    n_rows = 0
+    if (allocated(rows)) deallocate (rows)
+    allocate (rows(64))
     call output_remove_stale(m%out_dir, m%name)
   end subroutine output_begin
 
@@ -44,6 +64,7 @@ contains
     call remove(trim(dir) // '/' // trim(name) // '.pvd')
     call remove(trim(dir) // '/' // trim(name) // '_history.csv')
     call remove(trim(dir) // '/' // trim(name) // '_convergence.csv')
+    call remove(trim(dir) // '/' // trim(name) // '_contacts.csv')
   end subroutine output_remove_stale
 
   subroutine remove(path)
@@ -66,8 +87,11 @@ contains
     real(dp), allocatable :: tmpl(:)
     character(len=:), allocatable :: path
     integer :: u, ios, i, b, n, k
+    type(contact_snapshot) :: snap
 
     if (.not. m%vtk) return
+    call contact_hook_snapshot(snap)
+    if (step == 0) snap%n = 0
     write (tag, '(a,i4.4,a)') '_', step, '.vtp'
     path = output_path(m, trim(tag))
     open (newunit=u, file=path, status='replace', action='write', iostat=ios)
@@ -75,12 +99,24 @@ contains
     write (u, '(a)') '<?xml version="1.0"?>'
     write (u, '(a)') '<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian">'
     write (u, '(a)') '<PolyData>'
-    write (u, '(a,i0,a,i0,a)') '<Piece NumberOfPoints="', m%n_nodes, '" NumberOfLines="', m%n_beams, '">'
+    write (u, '(a,i0,a,i0,a,i0,a)') '<Piece NumberOfPoints="', m%n_nodes + snap%n, '" NumberOfVerts="', snap%n, &
+      '" NumberOfLines="', m%n_beams, '">'
     write (u, '(a)') '<Points>'
     write (u, '(a)') '<DataArray type="Float64" NumberOfComponents="3" format="ascii">'
     write (u, '(3es24.15e3)') m%x
+    do k = 1, snap%n
+      write (u, '(3es24.15e3)') 0.5_dp * (snap%c(k)%info(3:5) + snap%c(k)%info(6:8))
+    end do
     write (u, '(a)') '</DataArray>'
     write (u, '(a)') '</Points>'
+    write (u, '(a)') '<Verts>'
+    write (u, '(a)') '<DataArray type="Int32" Name="connectivity" format="ascii">'
+    write (u, '(i0)') (m%n_nodes + k - 1, k = 1, snap%n)
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '<DataArray type="Int32" Name="offsets" format="ascii">'
+    write (u, '(i0)') (k, k = 1, snap%n)
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '</Verts>'
     write (u, '(a)') '<Lines>'
     write (u, '(a)') '<DataArray type="Int32" Name="connectivity" format="ascii">'
     do b = 1, m%n_beams
@@ -102,21 +138,37 @@ contains
     do b = 1, m%n_beams
       write (u, '(es24.15e3)') (m%beam_radius(b), i = 1, m%beam_n_nodes(b))
     end do
+    write (u, '(es24.15e3)') (0.0_dp, k = 1, snap%n)
     write (u, '(a)') '</DataArray>'
     write (u, '(a)') '<DataArray type="Float64" Name="displacement" NumberOfComponents="3" format="ascii">'
     write (u, '(3es24.15e3)') m%x - m%x0
+    write (u, '(3es24.15e3)') (0.0_dp, 0.0_dp, 0.0_dp, k = 1, snap%n)
     write (u, '(a)') '</DataArray>'
     write (u, '(a)') '<DataArray type="Float64" Name="rotation" NumberOfComponents="3" format="ascii">'
     do i = 1, m%n_nodes
       write (u, '(3es24.15e3)') quat_to_rotvec(m%q(:, i))
     end do
+    write (u, '(3es24.15e3)') (0.0_dp, 0.0_dp, 0.0_dp, k = 1, snap%n)
     write (u, '(a)') '</DataArray>'
+    if (m%contact%enabled) then
+      write (u, '(a)') '<DataArray type="Float64" Name="normal_force" NumberOfComponents="3" format="ascii">'
+      write (u, '(3es24.15e3)') (0.0_dp, 0.0_dp, 0.0_dp, i = 1, m%n_nodes)
+      write (u, '(3es24.15e3)') (snap%c(k)%info(13) * snap%c(k)%info(9:11), k = 1, snap%n)
+      write (u, '(a)') '</DataArray>'
+      write (u, '(a)') '<DataArray type="Float64" Name="friction_force" NumberOfComponents="3" format="ascii">'
+      write (u, '(3es24.15e3)') (0.0_dp, 0.0_dp, 0.0_dp, i = 1, m%n_nodes)
+      write (u, '(3es24.15e3)') (-snap%c(k)%info(18:20), k = 1, snap%n)
+      write (u, '(a)') '</DataArray>'
+    end if
     write (u, '(a)') '</PointData>'
+    ! cells: the contact vertices first, then the beams' polylines (VTK's order)
     write (u, '(a)') '<CellData Scalars="beam">'
     write (u, '(a)') '<DataArray type="Int32" Name="beam" format="ascii">'
+    write (u, '(i0)') (0, k = 1, snap%n)
     write (u, '(i0)') (b, b = 1, m%n_beams)
     write (u, '(a)') '</DataArray>'
     write (u, '(a)') '<DataArray type="Int32" Name="group" format="ascii">'
+    write (u, '(i0)') (0, k = 1, snap%n)
     write (u, '(i0)') m%beam_group
     write (u, '(a)') '</DataArray>'
     write (u, '(a)') '</CellData>'
@@ -137,6 +189,25 @@ contains
     file_name(n_files) = trim(m%name) // trim(tag)
   end subroutine output_step
 
+  !> Keeps the active contacts of a converged step for the contacts CSV.
+  subroutine output_contacts(step, lam, snap)
+    integer, intent(in) :: step
+    real(dp), intent(in) :: lam
+    type(contact_snapshot), intent(in) :: snap
+    type(contact_row), allocatable :: tmp(:)
+    integer :: k
+    if (.not. allocated(rows)) allocate (rows(64))
+    do k = 1, snap%n
+      if (n_rows == size(rows)) then
+        allocate (tmp(2 * n_rows))
+        tmp(1:n_rows) = rows(1:n_rows)
+        call move_alloc(tmp, rows)
+      end if
+      n_rows = n_rows + 1
+      rows(n_rows) = contact_row(step=step, lam=lam, c=snap%c(k))
+    end do
+  end subroutine output_contacts
+
   !> CSV files and the .pvd collection, after a complete run.
   subroutine output_finish(m, h)
     type(scene_model), intent(in) :: m
@@ -149,14 +220,30 @@ contains
       open (newunit=u, file=path, status='replace', action='write', iostat=ios)
       if (ios /= 0) call fatal(path // ': cannot write')
       write (u, '(a)') 'step,load_factor,iterations,cutbacks,residual,residual_ref,' &
-                       // 'ux,uy,uz,rx,ry,rz'
+                       // 'ux,uy,uz,rx,ry,rz,contacts,slipping,normal_force,friction_force,rate,active_set_fixed'
       do i = 1, h%n_steps
         associate (s => h%steps(i))
-          write (u, '(i0,",",es23.15e3,2(",",i0),8(",",es23.15e3))') s%step, s%lam, s%iterations, &
-            s%cutbacks, s%last_norm, s%ref, s%u, s%rot
+          write (u, '(i0,",",es23.15e3,2(",",i0),8(",",es23.15e3),2(",",i0),3(",",es23.15e3),",",i0)') s%step, &
+            s%lam, s%iterations, s%cutbacks, s%last_norm, s%ref, s%u, s%rot, s%n_active, s%n_slip, s%fn, s%ft, &
+            s%rate, merge(1, 0, s%stable)
         end associate
       end do
       close (u)
+      if (m%contact%enabled) then
+        path = output_path(m, '_contacts.csv')
+        open (newunit=u, file=path, status='replace', action='write', iostat=ios)
+        if (ios /= 0) call fatal(path // ': cannot write')
+        write (u, '(a)') 'step,load_factor,beam_a,segment_a,beam_b,segment_b,xi,eta,x,y,z,nx,ny,nz,gap,' &
+                         // 'normal_force,tx,ty,tz,friction_state'
+        do i = 1, n_rows
+          associate (r => rows(i))
+            write (u, '(i0,",",es23.15e3,4(",",i0),13(",",es23.15e3),",",i0)') r%step, r%lam, r%c%pair, &
+              r%c%info(1:2), 0.5_dp * (r%c%info(3:5) + r%c%info(6:8)), r%c%info(9:11), r%c%info(12), &
+              r%c%info(13), r%c%info(18:20), nint(r%c%info(24))
+          end associate
+        end do
+        close (u)
+      end if
       path = output_path(m, '_convergence.csv')
       open (newunit=u, file=path, status='replace', action='write', iostat=ios)
       if (ios /= 0) call fatal(path // ': cannot write')

@@ -5,7 +5,7 @@
 module demo_scene_reader
   use demo_kinds, only: dp, pi, ndf
   use demo_errors, only: fatal, str
-  use demo_model, only: scene_model, name_len
+  use demo_model, only: scene_model, name_len, max_ramp_points
   use demo_nml_scan, only: nml_index, nml_scan, lower
   use demo_geometry, only: line_points, arc_points, element_frame
   use demo_rotation, only: quat_identity
@@ -17,16 +17,18 @@ module demo_scene_reader
   real(dp), parameter :: unset = -huge(1.0_dp)
   integer, parameter :: iunset = -huge(1)
 
-  character(len=*), parameter :: groups_valid = 'scene material beam support load motion output contact'
+  character(len=*), parameter :: groups_valid = 'scene material beam support load motion output contact check'
   character(len=*), parameter :: keys_scene = 'title n_steps max_iter max_cutbacks tol solver'
   character(len=*), parameter :: keys_material = 'id E nu radius A Iy Iz J'
   character(len=*), parameter :: keys_beam = 'shape p1 p2 centre start axis angle n_el material group up'
   character(len=*), parameter :: keys_support = 'beam node all dofs'
-  character(len=*), parameter :: keys_load = 'beam node force moment'
-  character(len=*), parameter :: keys_motion = 'beam node dof value'
+  character(len=*), parameter :: keys_load = 'beam node all force moment ramp'
+  character(len=*), parameter :: keys_motion = 'beam node dof value ramp'
   character(len=*), parameter :: keys_output = 'vtk csv vtk_every dir monitor_beam monitor_node'
   character(len=*), parameter :: keys_contact = 'curve law penalty regularization_gap friction ' &
                                                 // 'tangential_penalty self_contact pairs'
+  character(len=*), parameter :: keys_check = 'kind beam_a beam_b tolerance min_rate min_contacts ' &
+                                              // 'min_nodes_crossed'
 
   integer, parameter :: max_pairs = 64
 
@@ -58,6 +60,7 @@ contains
     call read_motions(u, m)
     call read_output(u, m)
     call read_contact(u, m)
+    call read_check(u, m)
     close (u)
     allocate (m%x(3, m%n_nodes), m%q(4, m%n_nodes))
     m%x = m%x0
@@ -85,7 +88,8 @@ contains
       case ('load'); valid = keys_load
       case ('motion'); valid = keys_motion
       case ('output'); valid = keys_output
-      case default; valid = keys_contact
+      case ('contact'); valid = keys_contact
+      case default; valid = keys_check
       end select
       if (.not. in_list(idx%keys(i)%key, valid)) &
         call fatal(idx%file // ':' // str(idx%keys(i)%line) // ': unknown key ''' // trim(idx%keys(i)%key) &
@@ -97,6 +101,7 @@ contains
     if (idx%count('beam') < 1) call fatal(idx%file // ': needs at least one &beam group')
     if (idx%count('output') > 1) call fatal(idx%file // ': at most one &output group')
     if (idx%count('contact') > 1) call fatal(idx%file // ': at most one &contact group')
+    if (idx%count('check') > 1) call fatal(idx%file // ': at most one &check group')
   end subroutine check_names
 
   !> Stops naming file:line, group occurrence and key.
@@ -320,7 +325,10 @@ contains
       end associate
     end do
 
-    allocate (m%fixed(ndf, nn), m%prescribed(ndf, nn), m%fext(ndf, nn))
+    allocate (m%fixed(ndf, nn), m%prescribed(ndf, nn), m%fext(ndf, nn), m%fext_ramp(ndf, nn), m%presc_ramp(ndf, nn))
+    m%fext_ramp = 0
+    m%presc_ramp = 0
+    allocate (m%ramp_n(0), m%ramp_t(max_ramp_points, 0), m%ramp_v(max_ramp_points, 0))
     m%fixed = .false.
     m%prescribed = 0.0_dp
     m%fext = 0.0_dp
@@ -398,35 +406,111 @@ contains
   subroutine read_loads(u, m)
     integer, intent(in) :: u
     type(scene_model), intent(inout) :: m
-    integer :: beam, node, k, ios, g
-    real(dp) :: force(3), moment(3)
+    integer :: beam, node, k, ios, g, g1, g2, id
+    logical :: all
+    real(dp) :: force(3), moment(3), ramp(2 * max_ramp_points)
     character(len=256) :: iomsg
-    namelist /load/ beam, node, force, moment
+    namelist /load/ beam, node, all, force, moment, ramp
     rewind (u)
     do k = 1, idx%count('load')
-      beam = iunset; node = iunset; force = unset; moment = unset
+      beam = iunset; node = iunset; all = .false.; force = unset; moment = unset; ramp = unset
       read (u, nml=load, iostat=ios, iomsg=iomsg)
       if (ios /= 0) call read_failed('load', k, ios, iomsg)
-      g = node_of(m, 'load', k, beam, node)
+      if (all) then
+        call need_int('load', k, 'beam', beam)
+        if (beam < 1 .or. beam > m%n_beams) call bad('load', k, 'beam', 'beam ' // str(beam) &
+            // ' does not exist; the scene has beams 1..' // str(m%n_beams))
+        if (idx%has_key('load', k, 'node')) call bad('load', k, 'node', 'given with all = .true.: give one of them')
+        g1 = m%beam_first_node(beam)
+        g2 = g1 + m%beam_n_nodes(beam) - 1
+      else
+        g1 = node_of(m, 'load', k, beam, node)
+        g2 = g1
+      end if
       if (any(force < -0.5_dp * huge(1.0_dp)) .and. any(moment < -0.5_dp * huge(1.0_dp))) &
         call bad('load', k, 'force', 'missing: give force = (3 components) and/or moment = (3 components)')
       if (idx%has_key('load', k, 'force')) call need_real('load', k, 'force', force)
       if (idx%has_key('load', k, 'moment')) call need_real('load', k, 'moment', moment)
-      if (idx%has_key('load', k, 'force')) m%fext(1:3, g) = m%fext(1:3, g) + force
-      if (idx%has_key('load', k, 'moment')) m%fext(4:6, g) = m%fext(4:6, g) + moment
+      id = new_ramp(m, 'load', k, ramp)
+      do g = g1, g2
+        if (idx%has_key('load', k, 'force')) then
+          call set_ramp(m%fext_ramp(1:3, g), m%fext(1:3, g), force, id, 'load', k)
+          m%fext(1:3, g) = m%fext(1:3, g) + force
+        end if
+        if (idx%has_key('load', k, 'moment')) then
+          call set_ramp(m%fext_ramp(4:6, g), m%fext(4:6, g), moment, id, 'load', k)
+          m%fext(4:6, g) = m%fext(4:6, g) + moment
+        end if
+      end do
     end do
   end subroutine read_loads
+
+  !> Records the ramp of the nonzero components; two loads with different
+  !> ramps on one component cannot be added into one value.
+  subroutine set_ramp(ramp_of, old, new, id, group, k)
+    integer, intent(inout) :: ramp_of(:)
+    real(dp), intent(in) :: old(:), new(:)
+    integer, intent(in) :: id, k
+    character(len=*), intent(in) :: group
+    integer :: i
+    do i = 1, size(ramp_of)
+      if (.not. abs(new(i)) > 0.0_dp) cycle
+      if (abs(old(i)) > 0.0_dp .and. ramp_of(i) /= id) call bad(group, k, 'ramp', 'a component already loaded ' &
+          // 'with another ramp: put loads with different ramps on different nodes')
+      ramp_of(i) = id
+    end do
+  end subroutine set_ramp
+
+  !> ramp = t1, v1, t2, v2, ... (t increasing): a new ramp and its number;
+  !> 0 (the load factor itself) when the key is absent.
+  integer function new_ramp(m, group, k, ramp) result(id)
+    type(scene_model), intent(inout) :: m
+    character(len=*), intent(in) :: group
+    integer, intent(in) :: k
+    real(dp), intent(in) :: ramp(:)
+    integer :: n, i
+    integer, allocatable :: tn(:)
+    real(dp), allocatable :: tt(:, :), tv(:, :)
+    id = 0
+    if (.not. idx%has_key(group, k, 'ramp')) return
+    n = 0
+    do i = 1, size(ramp) / 2
+      if (ramp(2 * i - 1) < -0.5_dp * huge(1.0_dp)) exit
+      if (ramp(2 * i) < -0.5_dp * huge(1.0_dp)) call bad(group, k, 'ramp', 'point ' // str(i) // ' has a t but no value:' &
+                                                        // ' give ramp = t1, v1, t2, v2, ...')
+      n = i
+    end do
+    if (n < 2) call bad(group, k, 'ramp', 'needs at least two points: ramp = t1, v1, t2, v2, ...')
+    do i = 2, n
+      if (.not. ramp(2 * i - 1) > ramp(2 * i - 3)) call bad(group, k, 'ramp', 'the times t must increase (point ' &
+                                                           // str(i) // ')')
+    end do
+    m%n_ramps = m%n_ramps + 1
+    id = m%n_ramps
+    allocate (tn(id), tt(max_ramp_points, id), tv(max_ramp_points, id))
+    tn(1:id - 1) = m%ramp_n
+    tt(:, 1:id - 1) = m%ramp_t
+    tv(:, 1:id - 1) = m%ramp_v
+    tn(id) = n
+    tt(:, id) = 0.0_dp
+    tv(:, id) = 0.0_dp
+    tt(1:n, id) = ramp(1:2 * n - 1:2)
+    tv(1:n, id) = ramp(2:2 * n:2)
+    call move_alloc(tn, m%ramp_n)
+    call move_alloc(tt, m%ramp_t)
+    call move_alloc(tv, m%ramp_v)
+  end function new_ramp
 
   subroutine read_motions(u, m)
     integer, intent(in) :: u
     type(scene_model), intent(inout) :: m
     integer :: beam, node, dof, k, ios, g
-    real(dp) :: value
+    real(dp) :: value, ramp(2 * max_ramp_points)
     character(len=256) :: iomsg
-    namelist /motion/ beam, node, dof, value
+    namelist /motion/ beam, node, dof, value, ramp
     rewind (u)
     do k = 1, idx%count('motion')
-      beam = iunset; node = iunset; dof = iunset; value = unset
+      beam = iunset; node = iunset; dof = iunset; value = unset; ramp = unset
       read (u, nml=motion, iostat=ios, iomsg=iomsg)
       if (ios /= 0) call read_failed('motion', k, ios, iomsg)
       g = node_of(m, 'motion', k, beam, node)
@@ -435,6 +519,7 @@ contains
       call need_real('motion', k, 'value', [value])
       m%fixed(dof, g) = .true.
       m%prescribed(dof, g) = value
+      m%presc_ramp(dof, g) = new_ramp(m, 'motion', k, ramp)
     end do
   end subroutine read_motions
 
@@ -512,6 +597,34 @@ contains
     m%contact%n_pairs = n
     m%contact%pairs = pairs(:, 1:n)
   end subroutine read_contact
+
+  subroutine read_check(u, m)
+    integer, intent(in) :: u
+    type(scene_model), intent(inout) :: m
+    character(len=32) :: kind
+    integer :: beam_a, beam_b, min_contacts, min_nodes_crossed, ios
+    real(dp) :: tolerance, min_rate
+    character(len=256) :: iomsg
+    namelist /check/ kind, beam_a, beam_b, tolerance, min_rate, min_contacts, min_nodes_crossed
+    if (idx%count('check') == 0) return
+    kind = ''; beam_a = 1; beam_b = 2; tolerance = 0.01_dp; min_rate = 1.8_dp; min_contacts = 1
+    min_nodes_crossed = 0
+    rewind (u)
+    read (u, nml=check, iostat=ios, iomsg=iomsg)
+    if (ios /= 0) call read_failed('check', 1, ios, iomsg)
+    kind = lower(kind)
+    if (.not. in_list(kind, 'crossed_beams cantilever_crossbar sliding friction_pull many_contacts')) &
+      call bad('check', 1, 'kind', '''' // trim(kind) // ''' is not one of crossed_beams, cantilever_crossbar, ' &
+               // 'sliding, friction_pull, many_contacts')
+    if (.not. m%contact%enabled) call bad('check', 1, 'kind', 'a contact check needs a &contact group')
+    if (beam_a < 1 .or. beam_a > m%n_beams) call bad('check', 1, 'beam_a', 'beam ' // str(beam_a) // ' does not exist')
+    if (beam_b < 1 .or. beam_b > m%n_beams .or. beam_b == beam_a) call bad('check', 1, 'beam_b', 'beam ' &
+        // str(beam_b) // ' does not exist or equals beam_a')
+    call positive('check', 1, 'tolerance', tolerance)
+    call positive('check', 1, 'min_rate', min_rate)
+    m%check%kind = kind; m%check%beam_a = beam_a; m%check%beam_b = beam_b; m%check%tolerance = tolerance
+    m%check%min_rate = min_rate; m%check%min_contacts = min_contacts; m%check%min_nodes_crossed = min_nodes_crossed
+  end subroutine read_check
 
   ! ---------------------------------------------------------------- helpers
 

@@ -16,18 +16,23 @@
 !> force EA (l - l0)/l0 carries the rounding of the coordinates, about
 !> EA/l0 * eps * |x|, and slender sections (EA/EI = 1/r^2 large) make that
 !> floor larger than tol * ref; below it Newton can only wander, so
-!> noise = 2 eps sqrt(n_elements) max(EA/l0) max|x| ends the iteration there.
+!> noise = 2 eps sqrt(n_elements) k max|x| ends the iteration there, with k
+!> the stiffest element stiffness, max(EA/l0, 12 EI/l0^3) (bending governs
+!> for thick or built-up sections).
 !> Update: x <- x + du, R <- exp(S(dw)) R with the spin dw solved for.
 module demo_solver
   use demo_kinds, only: dp, ndf
-  use demo_model, only: scene_model
+  use demo_model, only: scene_model, ramp_value, external_force
   use demo_rotation, only: quat_spin_update, quat_to_rotvec
   use demo_numbering, only: rcm_order, number_equations, half_bandwidth
   use demo_linear_system, only: linear_system, sys_setup, sys_solve
   use demo_assembly, only: assemble
-  use demo_contact_hook, only: contact_hook_init, contact_hook_commit, contact_hook_revert
+  use demo_contact_hook, only: contact_hook_init, contact_hook_commit, contact_hook_revert, contact_hook_failed, &
+                               contact_hook_signature, contact_hook_snapshot, contact_snapshot
   use demo_history, only: run_history, step_row, iter_row
-  use demo_output, only: output_begin, output_step, output_finish
+  use demo_output, only: output_begin, output_step, output_finish, output_contacts
+  use demo_checks, only: check_step
+  use, intrinsic :: iso_fortran_env, only: int64
   use demo_errors, only: fatal, str
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
@@ -62,11 +67,13 @@ contains
     type(run_history) :: hist
     integer, allocatable :: order(:)
     real(dp), allocatable :: x_save(:, :), q_save(:, :)
-    real(dp) :: lam, lam_target, dlam, norms(64)
-    integer :: step, cut, iters, n_norms, sub_iters
+    real(dp) :: lam, lam_target, dlam, norms(64), floor
+    integer(int64) :: sigs(64)
+    integer :: step, cut, iters, n_norms, sub_iters, k
     logical :: ok, talk
     type(step_row) :: row
     character(len=:), allocatable :: why
+    type(contact_snapshot) :: snap
 
     talk = .true.
     if (present(quiet)) talk = .not. quiet
@@ -96,9 +103,11 @@ contains
         dlam = min(dlam, lam_target - lam)
         x_save = m%x
         q_save = m%q
-        call newton(m, ns, hist, step, lam, lam + dlam, ok, sub_iters, norms, n_norms, why)
+        call newton(m, ns, hist, step, lam, lam + dlam, ok, sub_iters, norms, sigs, n_norms, floor, why)
+        floor = rounding_floor(m)
         iters = iters + sub_iters
         if (ok) then
+          call contact_hook_snapshot(snap)
           call contact_hook_commit(m)
           lam = lam + dlam
         else
@@ -126,8 +135,21 @@ contains
       row%ref = hist%iters(hist%n_iters)%ref
       row%u = m%x(:, m%monitor_node) - m%x0(:, m%monitor_node)
       row%rot = quat_to_rotvec(m%q(:, m%monitor_node))
+      call convergence_rate(norms(1:n_norms), sigs(1:n_norms), floor, row%rate, row%stable)
+      row%n_active = snap%n
+      row%fn = 0.0_dp
+      row%ft = 0.0_dp
+      row%n_slip = 0
+      do k = 1, snap%n
+        row%fn = row%fn + snap%c(k)%info(13)
+        row%ft = row%ft + norm2(snap%c(k)%info(18:20))
+        if (nint(snap%c(k)%info(24)) == 2) row%n_slip = row%n_slip + 1
+      end do
+      row%handovers = snap%counts(11)
       call hist%add_step(row)
-      if (talk) call step_line(row, norms(max(1, n_norms - 3):n_norms))
+      call output_contacts(step, lam, snap)
+      if (talk) call step_line(row, norms(max(1, n_norms - 3):n_norms), m%contact%enabled)
+      call check_step(m, row, snap, ns%fint)
       if (mod(step, m%vtk_every) == 0 .or. step == m%n_steps) call output_step(m, step, lam)
       if (present(on_step)) call on_step(m, step, lam)
     end do
@@ -135,7 +157,7 @@ contains
   end subroutine solve_scene
 
   !> One (sub)step from lam_old to lam_new. ok = .false. with a reason if it fails.
-  subroutine newton(m, ns, hist, step, lam_old, lam_new, ok, iters, norms, n_norms, why)
+  subroutine newton(m, ns, hist, step, lam_old, lam_new, ok, iters, norms, sigs, n_norms, noise, why)
     type(scene_model), intent(inout) :: m
     type(newton_state), intent(inout) :: ns
     type(run_history), intent(inout) :: hist
@@ -143,36 +165,60 @@ contains
     real(dp), intent(in) :: lam_old, lam_new
     logical, intent(out) :: ok
     integer, intent(out) :: iters, n_norms
-    real(dp), intent(out) :: norms(:)
+    real(dp), intent(out) :: norms(:), noise
+    integer(int64), intent(out) :: sigs(:)
     character(len=:), allocatable, intent(out) :: why
-    integer :: it, node, info
-    real(dp) :: nrm, ref, noise
+    integer :: it, node, info, widen
+    character(len=:), allocatable :: cwhy
+    real(dp) :: nrm, ref, extent
     type(iter_row) :: irow
 
     ok = .false.
     why = 'max_iter reached'
     n_norms = 0
     iters = 0
-    call prescribe(m, lam_new - lam_old)
+    noise = 0.0_dp
+    call prescribe(m, lam_old, lam_new)
     do it = 1, m%max_iter + 1
       call assemble(m, ns%eq, lam_new, .true., ns%sys, ns%r, ns%fint)
-      if (ns%sys%overflow) then
+      widen = 0
+      do
+        if (.not. ns%sys%overflow) exit
+        if (contact_hook_failed(cwhy)) exit
         ! couplings beyond the band (contacts between distant nodes): widen and redo
+        widen = widen + 1
+        if (widen > 2) call fatal(trim(m%file) // ': the band could not be widened to hold the contacts')
         ns%hb = max(ns%hb, ns%sys%need)
         call sys_setup(ns%sys, ns%neq, ns%hb, m%solver)
         call assemble(m, ns%eq, lam_new, .true., ns%sys, ns%r, ns%fint)
+      end do
+      if (contact_hook_failed(cwhy)) then
+        why = cwhy
+        return
       end if
       nrm = norm2(ns%r)
-      ref = max(lam_new * norm2(m%fext), norm2(ns%fint))
-      noise = 2.0_dp * epsilon(1.0_dp) * sqrt(real(m%n_elements, dp)) * maxval(m%el_stiff(1, :) / m%el_l0) &
-              * maxval(abs(m%x))
+      ref = max(norm2(external_force(m, lam_new)), norm2(ns%fint))
+      ! the floor scales with the coordinates, capped at 10 times the scene's
+      ! size: an iterate thrown far away (a body left without support) must
+      ! not raise its own convergence floor
+      extent = max(maxval(abs(m%x0)), maxval(m%el_l0))
+      noise = 2.0_dp * sqrt(real(m%n_elements, dp)) * rounding_floor(m) * min(maxval(abs(m%x)), 10.0_dp * extent) &
+              / max(maxval(abs(m%x)), tiny(1.0_dp))
       n_norms = min(n_norms + 1, size(norms))
-      if (n_norms == size(norms)) norms(1:n_norms - 1) = norms(2:n_norms)
+      if (n_norms == size(norms)) then
+        norms(1:n_norms - 1) = norms(2:n_norms)
+        sigs(1:n_norms - 1) = sigs(2:n_norms)
+      end if
       norms(n_norms) = nrm
+      sigs(n_norms) = contact_hook_signature()
       irow = iter_row(step=step, iteration=it - 1, lam=lam_new, norm=nrm, ref=ref)
       call hist%add_iter(irow)
       if (.not. ieee_is_finite(nrm)) then
         why = 'non-finite residual'
+        return
+      end if
+      if (maxval(abs(m%x - m%x0)) > 100.0_dp * extent) then
+        why = 'diverged: a node moved more than 100 times the size of the scene'
         return
       end if
       if (nrm <= max(m%tol * ref, noise)) then
@@ -209,26 +255,84 @@ contains
     if (any(e(4:6) > 0)) m%q(:, node) = quat_spin_update(m%q(:, node), w)
   end subroutine update_node
 
-  !> Increments of the prescribed motions (fixed dofs with a value): a
-  !> translation adds, a rotation is applied as a spin about the global axis.
-  subroutine prescribe(m, dlam)
+  !> Increments of the prescribed motions (fixed dofs with a value) from load
+  !> factor t0 to t1, each through its ramp: a translation adds, a rotation
+  !> is applied as a spin about the global axis.
+  subroutine prescribe(m, t0, t1)
     type(scene_model), intent(inout) :: m
-    real(dp), intent(in) :: dlam
-    integer :: node
+    real(dp), intent(in) :: t0, t1
+    integer :: node, d
+    real(dp) :: inc(6)
     do node = 1, m%n_nodes
-      m%x(:, node) = m%x(:, node) + dlam * m%prescribed(1:3, node)
-      if (any(abs(m%prescribed(4:6, node)) > 0.0_dp)) &
-        m%q(:, node) = quat_spin_update(m%q(:, node), dlam * m%prescribed(4:6, node))
+      do d = 1, 6
+        inc(d) = 0.0_dp
+        if (abs(m%prescribed(d, node)) > 0.0_dp) inc(d) = m%prescribed(d, node) &
+          * (ramp_value(m, m%presc_ramp(d, node), t1) - ramp_value(m, m%presc_ramp(d, node), t0))
+      end do
+      m%x(:, node) = m%x(:, node) + inc(1:3)
+      if (any(abs(inc(4:6)) > 0.0_dp)) m%q(:, node) = quat_spin_update(m%q(:, node), inc(4:6))
     end do
   end subroutine prescribe
 
-  subroutine step_line(row, last)
+  !> Convergence rate of a converged step from its residual norms:
+  !> p = log(r_k / r_(k-1)) / log(r_(k-1) / r_(k-2)) on the last three norms
+  !> after the first (r_0, the residual of the load or motion increment
+  !> before any correction, is the size of the step, not a Newton iterate)
+  !> and above the round-off floor (the final norm is dropped when it lies
+  !> within 3 times the floor of rounding_floor, where it measures the
+  !> rounding, not the iteration). rate < 0: fewer than three usable norms. stable: the active
+  !> contacts (their pairs) were the same in those iterations.
+  subroutine convergence_rate(norms, sigs, floor, rate, stable)
+    real(dp), intent(in) :: norms(:), floor
+    integer(int64), intent(in) :: sigs(:)
+    real(dp), intent(out) :: rate
+    logical, intent(out) :: stable
+    integer :: n
+    n = size(norms)
+    rate = -1.0_dp
+    stable = .false.
+    if (n >= 1) then
+      if (norms(n) <= 3.0_dp * floor) n = n - 1
+    end if
+    if (n < 4) return
+    if (.not. (norms(n) > 0.0_dp .and. norms(n - 1) < norms(n - 2) .and. norms(n) < norms(n - 1))) then
+      rate = 0.0_dp
+    else
+      rate = log(norms(n) / norms(n - 1)) / log(norms(n - 1) / norms(n - 2))
+    end if
+    stable = all(sigs(n - 2:size(sigs)) == sigs(size(sigs)))
+  end subroutine convergence_rate
+
+  !> The rounding level of the residual: an element force carries the
+  !> rounding of the coordinates, eps |x|, times the element's stiffest
+  !> translational stiffness, axial EA/l0 or bending 12 EI/l0^3.
+  real(dp) function rounding_floor(m) result(f)
+    type(scene_model), intent(in) :: m
+    real(dp) :: k
+    integer :: el
+    k = 0.0_dp
+    do el = 1, m%n_elements
+      k = max(k, m%el_stiff(1, el) / m%el_l0(el), 12.0_dp * maxval(m%el_stiff(3:4, el)) / m%el_l0(el)**3)
+    end do
+    f = epsilon(1.0_dp) * maxval(abs(m%x)) * k
+  end function rounding_floor
+
+  subroutine step_line(row, last, contact)
     type(step_row), intent(in) :: row
     real(dp), intent(in) :: last(:)
+    logical, intent(in) :: contact
     character(len=200) :: buf
+    character(len=120) :: cbuf
     write (buf, '(a,i4,a,f9.5,a,i3,a,i2,a)') 'step', row%step, '  load', row%lam, '  iterations', row%iterations, &
       '  cut-backs', row%cutbacks, '  |r|:'
-    write (*, '(2x,a,4es10.2)') trim(buf), last
+    cbuf = ''
+    if (contact) then
+      write (cbuf, '(a,i3,a,es10.3,a,es10.3)') '  contacts', row%n_active, '  f_N', row%fn, '  f_T', row%ft
+      if (row%rate >= 0.0_dp) write (cbuf(len_trim(cbuf) + 1:), '(a,f5.2,a)') '  rate', row%rate, &
+        trim(merge('  ', ' *', row%stable))
+    end if
+    write (*, '(2x,a,4es10.2)', advance='no') trim(buf), last
+    write (*, '(a)') trim(cbuf)
   end subroutine step_line
 
 end module demo_solver

@@ -1,0 +1,313 @@
+!> The checks a scene asks for in its &check group, computed by the program
+!> from the scene's own data (geometry, sections, loads, penalty) and the
+!> converged steps, and printed against the closed form. check_finish
+!> returns the verdict; b2b_demo exits with 1 when a check fails.
+!>
+!>  crossed_beams        two simply supported beams crossing, beam_a loaded
+!>                       at mid-span towards beam_b: at every step where the
+!>                       closed form predicts contact,
+!>                       F = (c_a P - g0) / (c_a + c_b + 1/eps),
+!>                       c_i = L_i^3 / (48 E I_i), within tolerance; the
+!>                       model's f_N and the reaction of beam_b both checked;
+!>                       and the deflection of beam_a below 1e-3 L_a (linear
+!>                       theory).
+!>  cantilever_crossbar  beam_a clamped at its first node, loaded at its tip
+!>                       towards the rigid crossbar beam_b at distance a from
+!>                       the clamp: F = (P a^2 (3L - a)/(6EI) - g0) / (a^3/(3EI) + 1/eps).
+!>                       P, L, a, g0 and EI come from the scene: P the load on
+!>                       beam_a, L its chord, a and g0 from the closest points
+!>                       of the two initial chords and the radii.
+!>  sliding              no cut-back at all, and a convergence rate >=
+!>                       min_rate in every step whose active set did not
+!>                       change in the iterations the rate is measured on
+!>                       (both for the smoothed curve kinds; reported only
+!>                       for 'linear', the straight segments they are
+!>                       compared with); the contact crosses at least
+!>                       min_nodes_crossed nodes of beam_b.
+!>  friction_pull        beam_a pulled over beam_b: the tangential reaction of
+!>                       beam_a's supports is below mu f_N in stick, equals
+!>                       mu f_N within tolerance in every slip step, and
+!>                       takes both signs in slip (reversal).
+!>  many_contacts        at least min_contacts active contacts at every step;
+!>                       the contact forces on beam_a balance its load along
+!>                       the load (1e-6); at least min_nodes_crossed handover
+!>                       hops in the run (the contacts slide across nodes).
+module demo_checks
+  use demo_kinds, only: dp
+  use demo_model, only: scene_model, external_force
+  use demo_history, only: step_row
+  use demo_contact_hook, only: contact_snapshot
+  implicit none
+  private
+  public :: check_step, check_finish
+
+  logical, save :: ok = .true.
+  integer, save :: n_slow = 0
+  integer, save :: n_checked = 0, n_rate = 0, total_cut = 0, seg_min = huge(1), seg_max = -huge(1)
+  integer, save :: n_stick = 0, n_slip_pos = 0, n_slip_neg = 0, total_hops = 0, min_active = huge(1)
+  real(dp), save :: worst = 0.0_dp, worst_rate = huge(1.0_dp), e_dir(3) = 0.0_dp
+  real(dp), save :: f_last = 0.0_dp, f_closed_last = 0.0_dp, r_last = 0.0_dp, f_closed_max = 0.0_dp
+
+contains
+
+  subroutine fail(msg)
+    character(len=*), intent(in) :: msg
+    write (*, '(a)') '  CHECK FAILED: ' // msg
+    ok = .false.
+  end subroutine fail
+
+  !> Chord of beam b in the initial configuration: first node and vector to the last.
+  subroutine chord(m, b, p, u)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: b
+    real(dp), intent(out) :: p(3), u(3)
+    p = m%x0(:, m%beam_first_node(b))
+    u = m%x0(:, m%beam_first_node(b) + m%beam_n_nodes(b) - 1) - p
+  end subroutine chord
+
+  !> Closest points of the two initial chords (as infinite lines): s, t in
+  !> units of the chords, and the distance of the axes.
+  subroutine chord_closest(m, a, b, s, t, dist)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: a, b
+    real(dp), intent(out) :: s, t, dist
+    real(dp) :: p(3), u(3), q(3), v(3), w(3), uu, uv, vv, uw, vw, det
+    call chord(m, a, p, u)
+    call chord(m, b, q, v)
+    w = p - q
+    uu = dot_product(u, u); uv = dot_product(u, v); vv = dot_product(v, v)
+    uw = dot_product(u, w); vw = dot_product(v, w)
+    det = uu * vv - uv * uv
+    s = (uv * vw - vv * uw) / det
+    t = (uu * vw - uv * uw) / det
+    dist = norm2(p + s * u - q - t * v)
+  end subroutine chord_closest
+
+  !> Sum of the reactions (f_int - f_ext on constrained translations) of beam b.
+  function reaction(m, b, fint, lam) result(r)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: b
+    real(dp), intent(in) :: fint(:, :), lam
+    real(dp) :: r(3), f(6, m%n_nodes)
+    integer :: node, d
+    f = external_force(m, lam)
+    r = 0.0_dp
+    do node = m%beam_first_node(b), m%beam_first_node(b) + m%beam_n_nodes(b) - 1
+      do d = 1, 3
+        if (m%fixed(d, node)) r(d) = r(d) + fint(d, node) - f(d, node)
+      end do
+    end do
+  end function reaction
+
+  !> The external force on beam b at load factor lam (vector sum).
+  function beam_load(m, b, lam) result(p)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: b
+    real(dp), intent(in) :: lam
+    real(dp) :: p(3), f(6, m%n_nodes)
+    integer :: node
+    f = external_force(m, lam)
+    p = 0.0_dp
+    do node = m%beam_first_node(b), m%beam_first_node(b) + m%beam_n_nodes(b) - 1
+      p = p + f(1:3, node)
+    end do
+  end function beam_load
+
+  real(dp) function max_deflection(m, b) result(w)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: b
+    integer :: node
+    w = 0.0_dp
+    do node = m%beam_first_node(b), m%beam_first_node(b) + m%beam_n_nodes(b) - 1
+      w = max(w, norm2(m%x(:, node) - m%x0(:, node)))
+    end do
+  end function max_deflection
+
+  !> Bending stiffness of beam b (its sections must be round: Iy = Iz).
+  real(dp) function bending_stiffness(m, b) result(ei)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: b
+    integer :: el
+    el = m%beam_first_el(b)
+    ei = m%el_stiff(3, el)
+    if (abs(m%el_stiff(4, el) - ei) > 1.0e-12_dp * ei) call fail('beam ' // itoa(b) // ' needs Iy = Iz for this check')
+  end function bending_stiffness
+
+  function itoa(i) result(s)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: s
+    character(len=16) :: buf
+    write (buf, '(i0)') i
+    s = trim(buf)
+  end function itoa
+
+  !> Called after every converged planned step.
+  subroutine check_step(m, row, snap, fint)
+    type(scene_model), intent(in) :: m
+    type(step_row), intent(in) :: row
+    type(contact_snapshot), intent(in) :: snap
+    real(dp), intent(in) :: fint(:, :)
+    real(dp) :: la, lb, ca, cb, eia, eib, p, g0, s, t, dist, f_model, f_closed, err, rb(3), a, rt(3), n(3), fn, mu
+    real(dp) :: fc(3), pext(3), sgn, w
+    integer :: k, seg
+
+    if (len_trim(m%check%kind) == 0) return
+    total_cut = total_cut + row%cutbacks
+    min_active = min(min_active, snap%n)
+    f_model = 0.0_dp
+    do k = 1, snap%n
+      f_model = f_model + snap%c(k)%info(13)
+    end do
+    associate (ba => m%check%beam_a, bb => m%check%beam_b, tol => m%check%tolerance)
+      select case (trim(m%check%kind))
+      case ('crossed_beams', 'cantilever_crossbar')
+        eia = bending_stiffness(m, ba)
+        call chord_closest(m, ba, bb, s, t, dist)
+        g0 = dist - m%beam_radius(ba) - m%beam_radius(bb)
+        la = norm2(m%x0(:, m%beam_first_node(ba) + m%beam_n_nodes(ba) - 1) - m%x0(:, m%beam_first_node(ba)))
+        p = norm2(beam_load(m, ba, row%lam))
+        if (m%check%kind == 'crossed_beams') then
+          eib = bending_stiffness(m, bb)
+          lb = norm2(m%x0(:, m%beam_first_node(bb) + m%beam_n_nodes(bb) - 1) - m%x0(:, m%beam_first_node(bb)))
+          ca = la**3 / (48.0_dp * eia)
+          cb = lb**3 / (48.0_dp * eib)
+          f_closed = max(0.0_dp, (ca * p - g0) / (ca + cb + 1.0_dp / m%contact%penalty))
+        else
+          a = s * la
+          f_closed = max(0.0_dp, (p * a**2 * (3.0_dp * la - a) / (6.0_dp * eia) - g0) &
+                                 / (a**3 / (3.0_dp * eia) + 1.0_dp / m%contact%penalty))
+        end if
+        rb = reaction(m, bb, fint, row%lam)
+        w = max_deflection(m, ba)
+        f_closed_max = max(f_closed_max, f_closed)
+        if (f_closed > 0.05_dp * f_closed_max .and. f_closed > 0.0_dp) then
+          n_checked = n_checked + 1
+          err = abs(f_model - f_closed) / f_closed
+          worst = max(worst, err, abs(norm2(rb) - f_closed) / f_closed)
+          write (*, '(4x,a,es13.6,a,es13.6,a,es13.6,a,es9.2,a,es9.2)') 'check: f_N ', f_model, '  reaction of beam_b ', &
+            norm2(rb), '  closed form ', f_closed, '  rel. error ', err, '  w/L ', w / la
+          if (err > tol) call fail('contact force off the closed form by more than the tolerance')
+          if (abs(norm2(rb) - f_closed) > tol * f_closed) call fail('reaction of beam_b off the closed form')
+        end if
+        if (w > 1.0e-3_dp * la) call fail('deflection above 1e-3 L: outside linear theory, reduce the load')
+        f_last = f_model
+        f_closed_last = f_closed
+        r_last = norm2(rb)
+      case ('sliding')
+        do k = 1, snap%n
+          seg = 0
+          if (snap%c(k)%pair(1) == bb) seg = snap%c(k)%pair(2)
+          if (snap%c(k)%pair(3) == bb) seg = snap%c(k)%pair(4)
+          if (seg > 0) then
+            seg_min = min(seg_min, seg)
+            seg_max = max(seg_max, seg)
+          end if
+        end do
+        if (row%stable .and. row%rate >= 0.0_dp) then
+          n_rate = n_rate + 1
+          worst_rate = min(worst_rate, row%rate)
+          if (row%rate < m%check%min_rate) then
+            if (trim(m%contact%curve) == 'linear') then
+              n_slow = n_slow + 1
+              write (*, '(4x,a)') 'note: rate below min_rate with straight segments (reported, not a failure)'
+            else
+              call fail('step ' // itoa(row%step) // ': convergence rate below min_rate with an unchanged active set')
+            end if
+          end if
+        end if
+        if (snap%n == 0) call fail('step ' // itoa(row%step) // ': no active contact (the beam lost contact)')
+      case ('friction_pull')
+        mu = m%contact%friction
+        if (snap%n > 0) then
+          n = snap%c(1)%info(9:11)
+          rb = reaction(m, ba, fint, row%lam)
+          rt = rb - dot_product(rb, n) * n
+          fn = f_model
+          if (row%n_slip == 0) then
+            if (norm2(rt) > 1.0e-9_dp * fn) then
+              n_stick = n_stick + 1
+              write (*, '(4x,a,es13.6,a,es13.6,a,f8.5)') 'check: stick, tangential reaction ', norm2(rt), &
+                '  mu f_N ', mu * fn, '  ratio ', norm2(rt) / (mu * fn)
+              if (norm2(rt) > mu * fn * (1.0_dp + 1.0e-9_dp)) call fail('stick beyond mu f_N')
+            end if
+          else if (row%n_slip == snap%n) then
+            if (.not. any(abs(e_dir) > 0.0_dp)) e_dir = rt / norm2(rt)
+            sgn = sign(1.0_dp, dot_product(rt, e_dir))
+            if (sgn > 0.0_dp) n_slip_pos = n_slip_pos + 1
+            if (sgn < 0.0_dp) n_slip_neg = n_slip_neg + 1
+            err = abs(norm2(rt) - mu * fn) / (mu * fn)
+            worst = max(worst, err)
+            n_checked = n_checked + 1
+            write (*, '(4x,a,es13.6,a,es13.6,a,es9.2,a,f5.1)') 'check: slip, tangential reaction ', &
+              sgn * norm2(rt), '  mu f_N ', mu * fn, '  rel. error ', err, '  direction', sgn
+            if (err > tol) call fail('slip force off mu f_N by more than the tolerance')
+          end if
+        end if
+      case ('many_contacts')
+        if (row%step > 1 .and. snap%n < m%check%min_contacts) call fail('step ' // itoa(row%step) // ': ' &
+            // itoa(snap%n) // ' active contacts, fewer than min_contacts')
+        total_hops = total_hops + row%handovers
+        fc = 0.0_dp
+        do k = 1, snap%n
+          if (snap%c(k)%pair(1) == ba) then
+            fc = fc + snap%c(k)%info(13) * snap%c(k)%info(9:11) - snap%c(k)%info(18:20)
+          else if (snap%c(k)%pair(3) == ba) then
+            fc = fc - snap%c(k)%info(13) * snap%c(k)%info(9:11) + snap%c(k)%info(18:20)
+          end if
+        end do
+        pext = beam_load(m, ba, row%lam)
+        if (norm2(pext) > 0.0_dp) then
+          err = abs(dot_product(fc + pext, pext)) / dot_product(pext, pext)
+          worst = max(worst, err)
+          write (*, '(4x,a,i0,a,es13.6,a,es13.6,a,es9.2,a,i0)') 'check: contacts ', snap%n, '  contact force along ' &
+            // 'the load ', -dot_product(fc, pext) / norm2(pext), '  load ', norm2(pext), '  rel. error ', err, &
+            '  handover hops so far ', total_hops
+          if (err > 1.0e-6_dp) call fail('contact forces do not balance the load on beam_a')
+        end if
+      end select
+    end associate
+  end subroutine check_step
+
+  !> Prints the summary of the scene's check; .false. if any part failed.
+  logical function check_finish(m) result(passed)
+    type(scene_model), intent(in) :: m
+    character(len=*), parameter :: fmt_err = '(a,es13.6,a,es13.6,a,es9.2)'
+    if (len_trim(m%check%kind) == 0) then
+      passed = .true.
+      return
+    end if
+    select case (trim(m%check%kind))
+    case ('crossed_beams', 'cantilever_crossbar')
+      if (n_checked == 0) call fail('no step with contact predicted: nothing checked')
+      write (*, fmt_err) trim(m%name) // ': check ' // trim(m%check%kind) // ': final f_N ', f_last, &
+        ', closed form ', f_closed_last, ', rel. error ', abs(f_last - f_closed_last) / max(f_closed_last, tiny(1.0_dp))
+      write (*, '(a,i0,a,es9.2,a,es9.2)') '  steps checked ', n_checked, ', worst rel. error (f_N and reaction) ', &
+        worst, ', tolerance ', m%check%tolerance
+    case ('sliding')
+      write (*, '(a,i0,a,i0,a,f6.3,a,i0,a,i0,a)') trim(m%name) // ': check sliding: cut-backs ', total_cut, &
+        ', steps with a fixed active set and a measurable rate ', n_rate, ' (worst rate ', &
+        merge(worst_rate, -1.0_dp, n_rate > 0), '), contact crossed segments ', seg_min, '..', seg_max, ' of beam_b'
+      if (trim(m%contact%curve) /= 'linear' .and. total_cut > 0) call fail('cut-backs with a smoothed curve kind')
+      if (trim(m%contact%curve) == 'linear') write (*, '(a,i0,a,i0,a)') '  straight segments (reported, not ' &
+        // 'failures): ', total_cut, ' cut-backs, ', n_slow, ' steps with a rate below min_rate'
+      if (n_rate == 0) call fail('no step to measure the convergence rate on')
+      if (seg_max - seg_min < m%check%min_nodes_crossed) call fail('the contact crossed ' // itoa(max(seg_max - seg_min, &
+          0)) // ' nodes of beam_b, fewer than min_nodes_crossed = ' // itoa(m%check%min_nodes_crossed))
+    case ('friction_pull')
+      write (*, '(a,i0,a,i0,a,i0,a,es9.2,a,es9.2)') trim(m%name) // ': check friction_pull: stick steps ', n_stick, &
+        ', slip steps forward ', n_slip_pos, ', after reversal ', n_slip_neg, '; worst plateau error ', worst, &
+        ', tolerance ', m%check%tolerance
+      if (n_stick == 0) call fail('no stick step seen')
+      if (n_slip_pos < 2 .or. n_slip_neg < 2) call fail('fewer than two slip steps in one direction: no plateau' &
+                                                        // ' or no reversal')
+    case ('many_contacts')
+      write (*, '(a,i0,a,i0,a,es9.2)') trim(m%name) // ': check many_contacts: fewest active contacts ', min_active, &
+        ', handover hops ', total_hops, ', worst balance error ', worst
+      if (total_hops < m%check%min_nodes_crossed) call fail('the contacts crossed ' // itoa(total_hops) &
+          // ' nodes, fewer than min_nodes_crossed = ' // itoa(m%check%min_nodes_crossed))
+    end select
+    passed = ok
+    write (*, '(a)') trim(m%name) // ': check ' // trim(merge('PASSED', 'FAILED', ok))
+  end function check_finish
+
+end module demo_checks
