@@ -10,7 +10,8 @@ namespace {
 constexpr int kLeafSize = 4;
 
 // 21 bits of v spread to every third bit of a 63-bit code.
-uint64_t spread_bits(uint64_t v) {
+// (Used by the BVH only: unused when the R-tree is built in.)
+[[maybe_unused]] uint64_t spread_bits(uint64_t v) {
   v &= 0x1fffff;
   v = (v | v << 32) & 0x1f00000000ffffULL;
   v = (v | v << 16) & 0x1f0000ff0000ffULL;
@@ -45,6 +46,13 @@ void BoxTree::build(const std::vector<Box>& boxes) {
   const int n = static_cast<int>(boxes.size());
   order_.resize(n);
   nodes_.clear();
+#ifdef B2B_HAVE_BOOST_GEOMETRY
+  std::vector<BValue> values;
+  values.reserve(n);
+  for (int k = 0; k < n; ++k) values.emplace_back(to_bbox(boxes[k]), k);
+  rtree_ = decltype(rtree_)(values.begin(), values.end());  // the packing constructor
+  for (int k = 0; k < n; ++k) order_[k] = k;
+#else
   if (n == 0) return;
   // Morton codes of the centres, in the centres' own bounding box.
   double lo[3], hi[3];
@@ -73,6 +81,7 @@ void BoxTree::build(const std::vector<Box>& boxes) {
   for (int k = 0; k < n; ++k) order_[k] = keyed[k].second;
   nodes_.reserve(2 * (n / kLeafSize + 1));
   build_range(0, n);
+#endif
 }
 
 // A balanced tree over sorted positions: halves of the range (Morton order

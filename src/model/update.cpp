@@ -207,7 +207,10 @@ void Updater::near_pairs() {
     items_.push_back(it);
   }
   // The contacts of the last commit are evaluated whatever the boxes say:
-  // their pair tells where the point went.
+  // their pair tells where the point went. Both lists are in key order (the
+  // search returns its pairs sorted, a < b), so a merge keeps them so.
+  const auto by_key = [](const Item& x, const Item& y) { return x.key < y.key; };
+  const size_t n_near = items_.size();
   for (const StoredPair& sp : committed.pairs) {
     if (sp.status != B2B_CONTACT_ACTIVE) continue;
     Item it;
@@ -218,7 +221,8 @@ void Updater::near_pairs() {
     it.hist_old = nullptr;
     items_.push_back(it);
   }
-  std::sort(items_.begin(), items_.end(), [](const Item& x, const Item& y) { return x.key < y.key; });
+  std::inplace_merge(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(n_near),
+                     items_.end(), by_key);
   items_.erase(std::unique(items_.begin(), items_.end(),
                            [](const Item& x, const Item& y) { return x.key == y.key; }),
                items_.end());
@@ -421,9 +425,14 @@ Problem Updater::handovers() {
     hops_ += hops;
     if (!found) ++lost_;
   }
-  items_.insert(items_.end(), added.begin(), added.end());
-  std::stable_sort(items_.begin(), items_.end(),
-                   [](const Item& x, const Item& y) { return x.key < y.key; });
+  if (!added.empty()) {  // merged in key order (the rest is sorted already)
+    const auto by_key = [](const Item& x, const Item& y) { return x.key < y.key; };
+    std::sort(added.begin(), added.end(), by_key);
+    const size_t n_sorted_items = items_.size();
+    items_.insert(items_.end(), added.begin(), added.end());
+    std::inplace_merge(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(n_sorted_items),
+                       items_.end(), by_key);
+  }
   return Problem();
 }
 
