@@ -155,18 +155,22 @@
  * same arc length from the joint to first order, and copies the rest (the
  * normal, the force components, stick or slip). The two segments must share
  * the joint (x_from(+-1) = x_to(-+1) to 1e-10 of their length, else
- * B2B_ERR_RANGE). The parameter is mapped whether or not the history holds a
+ * B2B_ERR_RANGE; so is a mapped parameter beyond 1e3, and nothing is
+ * written). The parameter is mapped whether or not the history holds a
  * contact (without one it is the warm start's point); a fresh (all-zero)
- * history is copied unchanged.
+ * history is copied unchanged. Evaluate both segments on the configuration of
+ * the committed step, where the anchors were taken (doc/handover.md); a point
+ * that crossed several joints is handed over once per joint.
  *
  * Bad input: B2B_ERR_NULL, B2B_ERR_STATE (params not finalized),
  * B2B_ERR_UNKNOWN_KIND, B2B_ERR_NONFINITE (coordinates, tangents, radii,
  * history), B2B_ERR_RANGE (a radius outside [0, B2B_COORD_MAX], a coordinate
  * beyond B2B_COORD_MAX, a history not written by b2b: a foreign format tag, a
  * "fresh" history that is not all zeros, a flag, normal or friction state out
- * of range, a tangential force in a history that is not in contact; and a
- * force, energy or tangent that would overflow, from a huge penalty times a
- * deep penetration), B2B_ERR_SIZE (history length, ldk < 24), and each
+ * of range, a closest-point parameter |xi| or |eta| beyond 1e3, a tangential
+ * force in a history that is not in contact; and a force, energy or tangent
+ * that would overflow, from a huge penalty times a deep penetration or a huge
+ * regularization gap, whatever the contact status), B2B_ERR_SIZE (history length, ldk < 24), and each
  * segment's own bad input exactly as for b2b_segment_eval (unknown kind or
  * rule, zero or non-finite end tangent, a midpoint segment at both beam ends,
  * B2B_ERR_COINCIDENT, B2B_ERR_FOLDED). The message names the beam (A or B).

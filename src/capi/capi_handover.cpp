@@ -70,6 +70,11 @@ int b2b_pair_history_handover(const b2b_params* params, int beam, int direction,
                     "to segment are %g chord lengths apart (direction %+d)",
                     direction > 0 ? "the end" : "the start", direction > 0 ? "the start" : "the end",
                     res.mismatch, direction);
+    if (!res.in_range)
+      return r.fail(B2B_ERR_RANGE,
+                    "the mapped closest-point parameter %g is beyond %g: the segments' speeds "
+                    "at the joint differ too much, or the history's parameter was too far off",
+                    res.mapped, pr::kHistParamMax);
     std::memcpy(hist_to, h, hist_len * sizeof(double));
     return B2B_OK;
   });

@@ -2,6 +2,7 @@
 
 #include <b2b/b2b.h>
 
+#include "../pair/history.hpp"
 #include "../pair/history_check.hpp"
 
 namespace b2b {
@@ -47,6 +48,11 @@ int check_history(const Reporter& r, const pr::Params& p, const char* name, cons
       return r.fail(B2B_ERR_RANGE,
                     "%s has friction state %g (B2B_FRICTION_STICK or _SLIP expected)", name,
                     c.value);
+    case pr::HistoryProblem::Parameter:
+      return r.fail(B2B_ERR_RANGE,
+                    "%s holds the closest-point parameter %s = %g, beyond %g: not a history "
+                    "b2b wrote",
+                    name, c.index == pr::kHistXi ? "xi" : "eta", c.value, pr::kHistParamMax);
     case pr::HistoryProblem::ForceWithoutContact:
       return r.fail(B2B_ERR_RANGE, "%s is not in contact but holds a friction state or force",
                     name);

@@ -63,7 +63,8 @@ bool handover_committed(const BeamTable& table, int from, int to, int side, int 
   for (int k = 0; k < 2; ++k)
     if (build_segment(table.segment(ids[k]), coords.data(), used_index, seg[k], false).status)
       return false;
-  return pair::handover_history(seg[0], seg[1], side, direction, hist, len).adjacent;
+  const pair::HandoverResult r = pair::handover_history(seg[0], seg[1], side, direction, hist, len);
+  return r.adjacent && r.in_range;
 }
 
 }  // namespace model

@@ -58,9 +58,12 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   // residual (already) and tangent.
   Kinematics k;
   const int geometric = contact_kinematics(params, A, B, hist_old, k, info, out.history);
+  // (Every status passes the finiteness guard: an OPEN pair's energy can
+  // overflow too, with a huge regularization gap.)
   auto no_force = [&](int status) {
     out.contact_status = status;
     if (K) std::memset(K, 0, kNdof * kNdof * sizeof(double));
+    out.overflow = !all_finite(out.info, kInfoLength) || !all_finite(out.history, hist_len);
   };
   if (geometric != B2B_CONTACT_OPEN) return no_force(geometric);
   const LawValue law = normal_law(params, k.gap);

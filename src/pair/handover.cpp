@@ -1,5 +1,7 @@
 #include "handover.hpp"
 
+#include <cmath>
+
 #include "../curve/vec3.hpp"
 #include "history.hpp"
 
@@ -25,7 +27,9 @@ HandoverResult handover_history(const curve::Segment& from, const curve::Segment
   // Same arc length from the joint, to first order: (t - t_from) s_from = (t' - t_to) s_to.
   const double ratio = curve::norm3(df) / curve::norm3(dt);
   double& t = hist[beam == 0 ? kHistXi : kHistEta];
-  t = t_to + (t - t_from) * ratio;
+  res.mapped = t_to + (t - t_from) * ratio;
+  res.in_range = std::fabs(res.mapped) <= kHistParamMax;  // (false for NaN too)
+  if (res.in_range) t = res.mapped;
   return res;
 }
 

@@ -16,6 +16,8 @@ constexpr double kJointMismatch = 1e-10;
 
 struct HandoverResult {
   bool adjacent = true;
+  bool in_range = true;   // the mapped parameter within kHistParamMax (else nothing written)
+  double mapped = 0.0;    // the mapped parameter
   double mismatch = 0.0;  // |x_from(joint) - x_to(joint)| / (chord_from + chord_to)
 };
 

@@ -31,6 +31,11 @@ inline int history_length(const Params& p) {
   return p.friction > 0.0 ? kHistoryLengthFriction : kHistoryLength;
 }
 
+// The closest-point parameters a history may hold: b2b writes |xi|, |eta| <= 3
+// (the search's box) and a handover maps them by the ratio of two segments'
+// speeds; beyond this bound a history was not written by b2b.
+constexpr double kHistParamMax = 1e3;
+
 constexpr double kHistTagFresh = 0.0;
 constexpr double kHistTagV1 = 1.0;
 

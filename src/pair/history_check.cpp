@@ -1,6 +1,7 @@
 #include "history_check.hpp"
 
 #include <cmath>
+#include <initializer_list>
 
 #include <b2b/b2b.h>
 
@@ -36,6 +37,8 @@ HistoryCheck check_history(const Params& p, const double* h, int len) {
       if (h[i] != 0.0) return problem(HistoryProblem::FreshNotZero, i, h[i]);
     return HistoryCheck();
   }
+  for (int slot : {static_cast<int>(kHistXi), static_cast<int>(kHistEta)})
+    if (std::fabs(h[slot]) > kHistParamMax) return problem(HistoryProblem::Parameter, slot, h[slot]);
   const double has_normal = h[kHistHasNormal];
   if (has_normal != 0.0 && has_normal != 1.0)
     return problem(HistoryProblem::NormalFlag, kHistHasNormal, has_normal);

@@ -20,6 +20,7 @@ enum class HistoryProblem {
   InContactNoNormal,    // in contact without a normal
   FrictionState,        // in contact with friction state `value`
   ForceWithoutContact,  // not in contact but a friction state or force
+  Parameter,            // |xi| or |eta| (entry `index`) is `value`, beyond kHistParamMax
 };
 
 struct HistoryCheck {
