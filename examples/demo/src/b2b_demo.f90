@@ -1,5 +1,7 @@
 !> b2b_demo: solves one scene file.
 !>   b2b_demo scene.nml [output_dir]
+!> or prints the trade table (demo_trade; scene_dir default examples/demo/scenes):
+!>   b2b_demo --trade-table [short|full] [scene_dir [output_dir]]
 !> Prints one line per load step, writes VTK and CSV files (demo_output) and
 !> exits with 0 only if every step converged and the scene's &check (if any)
 !> passed; a failed check exits with 1, any error with a message and 2.
@@ -11,15 +13,31 @@ program b2b_demo
   use demo_output, only: output_remove_stale
   use demo_checks, only: check_finish
   use demo_contact_hook, only: contact_hook_finish
+  use demo_trade, only: trade_table
   use b2b, only: b2b_version
   implicit none
+  character(len=*), parameter :: usage = 'usage: b2b_demo scene.nml [output_dir]' // new_line('a') &
+    // '       b2b_demo --trade-table [short|full] [scene_dir [output_dir]]'
   type(scene_model) :: m
-  character(len=1024) :: file, dir
+  character(len=1024) :: file, dir, mode, scene_dir
   integer :: major, minor, patch, i, j
+  logical :: passed
 
-  if (command_argument_count() < 1 .or. command_argument_count() > 2) &
-    call fatal('usage: b2b_demo scene.nml [output_dir]')
+  if (command_argument_count() < 1 .or. command_argument_count() > 4) call fatal(usage)
   call get_command_argument(1, file)
+  if (file == '--trade-table') then
+    ! the trade table (demo_trade): many variants of the sliding scenes in this process
+    mode = 'short'
+    scene_dir = 'examples/demo/scenes'
+    dir = '.'
+    if (command_argument_count() >= 2) call get_command_argument(2, mode)
+    if (command_argument_count() >= 3) call get_command_argument(3, scene_dir)
+    if (command_argument_count() >= 4) call get_command_argument(4, dir)
+    call trade_table(trim(mode), trim(scene_dir), trim(dir), passed)
+    if (.not. passed) error stop 1
+    stop
+  end if
+  if (command_argument_count() > 2) call fatal(usage)
   call b2b_version(major, minor, patch)
   write (*, '(a,i0,a,i0,a,i0,a)') 'b2b_demo (b2b ', major, '.', minor, '.', patch, '): ' // trim(file)
   dir = ''

@@ -5,7 +5,7 @@
 !>  * contact_hook_init: b2b_model_create; b2b_model_add_beam for every beam
 !>    (its global node numbers, closed or not, radius, the curve kind of
 !>    &contact, its group); one b2b_params (penalty, law, regularization_gap,
-!>    friction, tangential_penalty) given to b2b_model_set_group_pair for
+!>    friction, tangential_penalty, tangent) given to b2b_model_set_group_pair for
 !>    every pair of groups (and each group with itself, plus
 !>    b2b_model_set_self_contact per beam, with self_contact);
 !>    b2b_model_finalize(model, n_nodes).
@@ -34,7 +34,8 @@ module demo_contact_hook
                  b2b_model_add_tangent_banded, b2b_model_add_tangent_dense, b2b_model_commit, &
                  b2b_model_revert, b2b_model_stats, b2b_model_destroy, &
                  B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL, &
-                 B2B_CURVE_HERMITE_NODAL_WEIGHTED, B2B_LAW_LINEAR, B2B_LAW_QUADRATIC, B2B_ERR_RANGE
+                 B2B_CURVE_HERMITE_NODAL_WEIGHTED, B2B_LAW_LINEAR, B2B_LAW_QUADRATIC, B2B_ERR_RANGE, &
+                 B2B_TANGENT_EXACT, B2B_TANGENT_SYMMETRIC, B2B_TANGENT_MAIN, B2B_TANGENT_FD
   use, intrinsic :: iso_fortran_env, only: int64
   implicit none
   private
@@ -77,14 +78,26 @@ contains
     end select
   end function curve_kind
 
+  !> b2b_params "tangent" of the &contact key tangent (validated by the reader).
+  integer function tangent_option(name) result(k)
+    character(len=*), intent(in) :: name
+    select case (trim(name))
+    case ('symmetric'); k = B2B_TANGENT_SYMMETRIC
+    case ('main'); k = B2B_TANGENT_MAIN
+    case ('fd'); k = B2B_TANGENT_FD
+    case default; k = B2B_TANGENT_EXACT
+    end select
+  end function tangent_option
+
   subroutine check(ierr, errmsg, what)
     integer, intent(in) :: ierr
     character(len=*), intent(in) :: errmsg, what
     if (ierr /= 0) call fatal('contact model: ' // what // ': ' // trim(errmsg))
   end subroutine check
 
-  subroutine contact_hook_init(m)
+  subroutine contact_hook_init(m, quiet)
     type(scene_model), intent(in) :: m
+    logical, intent(in), optional :: quiet
     type(b2b_params) :: params
     integer :: b, k, g, beam, ierr, i, node
     integer, allocatable :: nodes(:)
@@ -126,6 +139,8 @@ contains
       call b2b_params_set_real(params, 'tangential_penalty', m%contact%tangential_penalty, ierr, msg)
       call check(ierr, msg, 'tangential_penalty')
     end if
+    call b2b_params_set_int(params, 'tangent', tangent_option(m%contact%tangent), ierr, msg)
+    call check(ierr, msg, 'tangent')
     call b2b_params_finalize(params, ierr, msg)
     call check(ierr, msg, 'parameters')
     do k = 1, m%contact%n_pairs
@@ -155,9 +170,13 @@ contains
     eq_all = reshape([(i, i = 1, ndf * m%n_nodes)], [ndf, m%n_nodes])
     on = .true.
     node = 0
+    if (present(quiet)) then
+      if (quiet) return
+    end if
     write (*, '(a)') '  contact: curve ' // trim(m%contact%curve) // ', law ' // trim(m%contact%law) // ', penalty ' &
       // str(m%contact%penalty) // ', friction ' // str(m%contact%friction) // trim(merge(', self-contact', &
-      '              ', m%contact%self_contact)) // ', ' // str(m%contact%n_pairs) // ' group pair(s)'
+      '              ', m%contact%self_contact)) // ', ' // str(m%contact%n_pairs) // ' group pair(s), tangent ' &
+      // trim(m%contact%tangent)
   end subroutine contact_hook_init
 
   !> Adds the contact part of the internal force to r (free dofs, numbered

@@ -15,6 +15,7 @@ module demo_model
     logical :: enabled = .false.
     character(len=32) :: curve = 'hermite_nodal'
     character(len=32) :: law = 'linear'
+    character(len=16) :: tangent = 'exact' !< exact | symmetric | main | fd (b2b_params "tangent")
     real(dp) :: penalty = 0.0_dp
     real(dp) :: regularization_gap = 0.0_dp
     real(dp) :: friction = 0.0_dp

@@ -26,7 +26,7 @@ module demo_scene_reader
   character(len=*), parameter :: keys_motion = 'beam node dof value ramp'
   character(len=*), parameter :: keys_output = 'vtk csv vtk_every dir monitor_beam monitor_node'
   character(len=*), parameter :: keys_contact = 'curve law penalty regularization_gap friction ' &
-                                                // 'tangential_penalty self_contact pairs'
+                                                // 'tangential_penalty self_contact pairs tangent'
   character(len=*), parameter :: keys_check = 'kind beam_a beam_b tolerance min_rate min_contacts ' &
                                               // 'min_nodes_crossed'
 
@@ -548,14 +548,16 @@ contains
     integer, intent(in) :: u
     type(scene_model), intent(inout) :: m
     character(len=32) :: curve, law
+    character(len=16) :: tangent
     real(dp) :: penalty, regularization_gap, friction, tangential_penalty
     logical :: self_contact
     integer :: pairs(2, max_pairs), ios, n, i
     character(len=256) :: iomsg
-    namelist /contact/ curve, law, penalty, regularization_gap, friction, tangential_penalty, self_contact, pairs
+    namelist /contact/ curve, law, penalty, regularization_gap, friction, tangential_penalty, self_contact, pairs, &
+                       tangent
     if (idx%count('contact') == 0) return
     curve = ''; law = 'linear'; penalty = unset; regularization_gap = 0.0_dp; friction = 0.0_dp
-    tangential_penalty = 0.0_dp; self_contact = .false.; pairs = 0
+    tangential_penalty = 0.0_dp; self_contact = .false.; pairs = 0; tangent = 'exact'
     rewind (u)
     read (u, nml=contact, iostat=ios, iomsg=iomsg)
     if (ios /= 0) call read_failed('contact', 1, ios, iomsg)
@@ -568,6 +570,9 @@ contains
     law = lower(law)
     if (.not. in_list(law, 'linear quadratic')) call bad('contact', 1, 'law', '''' // trim(law) &
                                                           // ''' is not one of linear, quadratic')
+    tangent = lower(tangent)
+    if (.not. in_list(tangent, 'exact symmetric main fd')) call bad('contact', 1, 'tangent', '''' // trim(tangent) &
+        // ''' is not one of exact, symmetric, main, fd')
     call need_real('contact', 1, 'penalty', [penalty])
     call positive('contact', 1, 'penalty', penalty)
     if (regularization_gap < 0.0_dp) call bad('contact', 1, 'regularization_gap', 'is ' // str(regularization_gap) &
@@ -591,7 +596,7 @@ contains
     if (n == 0 .and. .not. self_contact) call bad('contact', 1, 'pairs', &
         'missing: give pairs = ga, gb (groups that touch) or self_contact = .true.')
     m%contact%enabled = .true.
-    m%contact%curve = curve; m%contact%law = law; m%contact%penalty = penalty
+    m%contact%curve = curve; m%contact%law = law; m%contact%penalty = penalty; m%contact%tangent = tangent
     m%contact%regularization_gap = regularization_gap; m%contact%friction = friction
     m%contact%tangential_penalty = tangential_penalty; m%contact%self_contact = self_contact
     m%contact%n_pairs = n

@@ -59,10 +59,18 @@ module demo_solver
 
 contains
 
-  subroutine solve_scene(m, on_step, quiet)
+  !> Solves the scene. Optional, for programs that run many scenes in one
+  !> process (the trade table): quiet (no per-step lines), history (the
+  !> step rows of the run) and failed_step: when present, a step that does
+  !> not converge within max_cutbacks ends the run with failed_step = that
+  !> step (and no .pvd or CSV written) instead of stopping the program;
+  !> 0 when every step converged.
+  subroutine solve_scene(m, on_step, quiet, history, failed_step)
     type(scene_model), intent(inout) :: m
     procedure(step_callback), optional :: on_step
     logical, intent(in), optional :: quiet
+    type(run_history), intent(out), optional :: history
+    integer, intent(out), optional :: failed_step
     type(newton_state) :: ns
     type(run_history) :: hist
     integer, allocatable :: order(:)
@@ -77,6 +85,7 @@ contains
 
     talk = .true.
     if (present(quiet)) talk = .not. quiet
+    if (present(failed_step)) failed_step = 0
 
     allocate (order(m%n_nodes), ns%eq(ndf, m%n_nodes), ns%fint(ndf, m%n_nodes))
     call rcm_order(m%n_nodes, m%conn, order)
@@ -87,7 +96,7 @@ contains
     if (talk) write (*, '(a)') trim(m%name) // ': ' // trim(m%title)
     if (talk) write (*, '(2x,i0,a,i0,a,i0,a,i0,a,a)') m%n_nodes, ' nodes, ', m%n_elements, ' elements, ', ns%neq, &
       ' equations, half bandwidth ', ns%hb, ', solver ', trim(merge('dense dgesv  ', 'banded dgbsv ', ns%sys%dense))
-    call contact_hook_init(m)
+    call contact_hook_init(m, quiet=.not. talk)
     call output_begin(m)
     call output_step(m, 0, 0.0_dp)
 
@@ -118,6 +127,11 @@ contains
           if (talk) write (*, '(2x,a,i0,a,f8.6,a,f8.6,a,4es10.2)') 'step ', step, ': no convergence from load ', lam, &
             ' to ', lam + dlam, ' (' // why // '), cutting the increment in half; |r|:', &
             norms(max(1, n_norms - 3):n_norms)
+          if (cut > m%max_cutbacks .and. present(failed_step)) then
+            failed_step = step
+            if (present(history)) history = hist
+            return
+          end if
           if (cut > m%max_cutbacks) call fatal(trim(m%file) // ': load step ' // str(step) // ' (load factor ' &
             // str(lam) // ' to ' // str(lam_target) // ') did not converge after ' // str(m%max_cutbacks) &
             // ' cut-backs (last try: ' // why // '); no result written. Change: more n_steps or max_iter in' &
@@ -154,6 +168,7 @@ contains
       if (present(on_step)) call on_step(m, step, lam)
     end do
     call output_finish(m, hist)
+    if (present(history)) history = hist
   end subroutine solve_scene
 
   !> One (sub)step from lam_old to lam_new. ok = .false. with a reason if it fails.
