@@ -472,8 +472,9 @@ void Updater::finish() {
     totals[B2B_TOTAL_ENERGY] += r.info[B2B_INFO_ENERGY];
     totals[B2B_TOTAL_DISSIPATION_STEP] += r.info[B2B_INFO_DISSIPATION];
     totals[B2B_TOTAL_NORMAL_FORCE] += r.info[B2B_INFO_NORMAL_FORCE];
-    if (r.info[B2B_INFO_FRICTION_STATE] == B2B_FRICTION_STICK) ++counts[B2B_COUNT_STICK];
-    if (r.info[B2B_INFO_FRICTION_STATE] == B2B_FRICTION_SLIP) ++counts[B2B_COUNT_SLIP];
+    const int friction_state = static_cast<int>(r.info[B2B_INFO_FRICTION_STATE]);
+    if (friction_state == B2B_FRICTION_STICK) ++counts[B2B_COUNT_STICK];
+    if (friction_state == B2B_FRICTION_SLIP) ++counts[B2B_COUNT_SLIP];
   }
   trial.dissipation = m.committed_.dissipation + totals[B2B_TOTAL_DISSIPATION_STEP];
   totals[B2B_TOTAL_DISSIPATION] = trial.dissipation;

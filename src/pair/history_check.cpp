@@ -53,7 +53,8 @@ HistoryCheck check_history(const Params& p, const double* h, int len) {
     if (in_contact != 0.0 && in_contact != 1.0)
       return problem(HistoryProblem::InContactFlag, kHistInContact, in_contact);
     if (in_contact == 1.0 && has_normal != 1.0) return problem(HistoryProblem::InContactNoNormal);
-    if (in_contact == 1.0 && state != B2B_FRICTION_STICK && state != B2B_FRICTION_SLIP)
+    constexpr double kStick = B2B_FRICTION_STICK, kSlip = B2B_FRICTION_SLIP;
+    if (in_contact == 1.0 && state != kStick && state != kSlip)
       return problem(HistoryProblem::FrictionState, kHistFrictionState, state);
     if (in_contact == 0.0 &&
         (state != 0.0 || h[kHistForceE1] != 0.0 || h[kHistForceE2] != 0.0))
