@@ -80,7 +80,6 @@ int report_model_problem(const Reporter& r, const b2b_model* model, const md::Pr
       return r.fail(pb.status, "a contact couples equations %d and %d, outside the band (kl, "
                     "ku): widen the band", pb.row, pb.col);
     case W::None:
-    case W::NodeRepeated:
       break;
   }
   return r.fail(B2B_ERR_INTERNAL, "unclassified model problem (status %d)", pb.status);

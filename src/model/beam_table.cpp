@@ -86,7 +86,11 @@ void BeamTable::measure_arcs(const std::vector<Beam>& beams, const double* coord
       if (beam.kind == B2B_CURVE_HERMITE_MIDPOINT) {
         // centred on node s, from the middle of the element before to the
         // middle of the element after (the node itself at an open end)
-        const double before = (s > 0 || beam.closed) ? (s > 0 ? cum[s] - cum[s - 1] : cum[n] - cum[n - 1]) : 0.0;
+        double before = 0.0;  // the element before node s (none at an open start)
+        if (s > 0)
+          before = cum[s] - cum[s - 1];
+        else if (beam.closed)
+          before = cum[n] - cum[n - 1];
         const double after = (s < n - 1 || beam.closed) ? cum[s + 1] - cum[s] : 0.0;
         arc_lo_[g] = cum[s] - 0.5 * before;
         arc_hi_[g] = cum[s] + 0.5 * after;

@@ -124,7 +124,6 @@ bool Model::may_pair(int a, int b) const {
 
 void Model::commit() {
   committed_ = trial_;
-  committed_.dissipation = trial_.dissipation;
   committed_coords_ = current_coords_;
   updated_ = false;
 }

@@ -30,7 +30,7 @@ struct GroupPair {
 struct Problem {
   int status = 0;
   enum class What {
-    None, NodeRange, NodeRepeated, SelfNoGroupPair, NoGroupPair, Coordinate, Segment,
+    None, NodeRange, SelfNoGroupPair, NoGroupPair, Coordinate, Segment,
     Overflow, Buffer, Equation, Band
   } what = What::None;
   int beam = -1, segment = -1, node = -1, slot_a = -1, slot_b = -1, axis = -1;
@@ -69,7 +69,6 @@ class Model {
   // State for the C boundary's checks.
   bool updated() const { return updated_; }      // an update since the last commit/revert
   bool has_results() const { return has_results_; }
-  bool between_steps() const { return !updated_; }
 
   // --- per iteration ---
   // x: host coordinates (node k at x[ldx*k]), valid size (checked by the caller).
