@@ -275,7 +275,8 @@ contains
     h = int(last%n, int64)
     do k = 1, last%n
       do i = 1, 4
-        h = modulo(h * 1000003_int64 + int(last%c(k)%pair(i), int64), 2305843009213693951_int64)
+        ! modulo a prime below 2^30, so that h * 1000003 stays far inside int64
+        h = modulo(h * 1000003_int64 + int(last%c(k)%pair(i), int64), 1000000007_int64)
       end do
     end do
   end function contact_hook_signature

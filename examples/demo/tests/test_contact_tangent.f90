@@ -84,6 +84,8 @@ program test_contact_tangent
     ' equations; assembled tangent with contact vs central differences: relative error ', err, &
     ', worst entry (row, col)', worst_i, worst_j
   ok = err <= tol .and. snap%n > 0
+  ! freed here, not left to the end of the program (LeakSanitizer counts them)
+  deallocate (order, eq, fint, r, rp, rm, kfd, x_keep, q_keep)
   call contact_hook_finish()
   if (.not. ok) then
     write (*, '(a,es9.2)') 'FAIL: tangent with contact differs from the differences by more than ', tol
