@@ -32,8 +32,19 @@
 !>                       the contact forces on beam_a balance its load along
 !>                       the load (1e-6); at least min_nodes_crossed handover
 !>                       hops in the run (the contacts slide across nodes).
+!>  capstan              beam_a (the rope) led over pegs, its first node
+!>                       loaded (the held tension T_in), its last node pulled
+!>                       by a prescribed motion: in every step where all
+!>                       active contacts slip and the pull exceeds T_in,
+!>                       T_out / T_in within tolerance of the product over
+!>                       the rope's initial corners (turning angles a_k) of
+!>                       (1 + mu tan(a_k/2)) / (1 - mu tan(a_k/2)), i.e.
+!>                       [(1 + mu tan(a/2)) / (1 - mu tan(a/2))]^n for n
+!>                       equal turns; T_out = |reaction| of beam_a's
+!>                       supports (its pulled node), T_in = |load on beam_a|.
+!>                       At least two such steps (a plateau) are required.
 module demo_checks
-  use demo_kinds, only: dp
+  use demo_kinds, only: dp, pi
   use demo_model, only: scene_model, external_force
   use demo_history, only: step_row
   use demo_contact_hook, only: contact_snapshot
@@ -47,6 +58,11 @@ module demo_checks
   integer, save :: n_stick = 0, n_slip_pos = 0, n_slip_neg = 0, total_hops = 0, min_active = huge(1)
   real(dp), save :: worst = 0.0_dp, worst_rate = huge(1.0_dp), e_dir(3) = 0.0_dp
   real(dp), save :: f_last = 0.0_dp, f_closed_last = 0.0_dp, r_last = 0.0_dp, f_closed_max = 0.0_dp
+  ! capstan: the formula, its corners and total turn, the last ratio seen
+  integer, save :: n_corners = -1
+  integer, save :: first_slip_step = 0
+  real(dp), save :: ratio_formula = 0.0_dp, turn_total = 0.0_dp, ratio_first = 0.0_dp, ratio_last = 0.0_dp
+  real(dp), save :: t_in_last = 0.0_dp
 
 contains
 
@@ -132,6 +148,34 @@ contains
     ei = m%el_stiff(3, el)
     if (abs(m%el_stiff(4, el) - ei) > 1.0e-12_dp * ei) call fail('beam ' // itoa(b) // ' needs Iy = Iz for this check')
   end function bending_stiffness
+
+  !> The capstan formula from beam b's initial polygon: a corner at every
+  !> inner node whose legs turn by more than 1e-6 rad; per corner
+  !> (1 + mu tan(a/2)) / (1 - mu tan(a/2)) (exact for a string over a
+  !> point-like peg: normal force along the bisector, friction mu f_N along
+  !> the string), the product over the corners.
+  subroutine capstan_formula(m, b)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: b
+    integer :: node
+    real(dp) :: t1(3), t2(3), c(3), a, mt
+    n_corners = 0
+    turn_total = 0.0_dp
+    ratio_formula = 1.0_dp
+    do node = m%beam_first_node(b) + 1, m%beam_first_node(b) + m%beam_n_nodes(b) - 2
+      t1 = m%x0(:, node) - m%x0(:, node - 1)
+      t2 = m%x0(:, node + 1) - m%x0(:, node)
+      c = [t1(2) * t2(3) - t1(3) * t2(2), t1(3) * t2(1) - t1(1) * t2(3), t1(1) * t2(2) - t1(2) * t2(1)]
+      a = atan2(norm2(c), dot_product(t1, t2))
+      if (a <= 1.0e-6_dp) cycle
+      n_corners = n_corners + 1
+      turn_total = turn_total + a
+      mt = m%contact%friction * tan(0.5_dp * a)
+      if (mt >= 1.0_dp) call fail('a corner with mu tan(a/2) >= 1: the rope cannot slip there')
+      ratio_formula = ratio_formula * (1.0_dp + mt) / (1.0_dp - mt)
+    end do
+    if (n_corners == 0) call fail('beam_a has no corner: no capstan')
+  end subroutine capstan_formula
 
   function itoa(i) result(s)
     integer, intent(in) :: i
@@ -243,6 +287,26 @@ contains
             if (err > tol) call fail('slip force off mu f_N by more than the tolerance')
           end if
         end if
+      case ('capstan')
+        if (n_corners < 0) call capstan_formula(m, ba)
+        rb = reaction(m, ba, fint, row%lam)
+        p = norm2(beam_load(m, ba, row%lam))
+        if (snap%n >= n_corners .and. row%n_slip == snap%n .and. p > 0.0_dp) then
+          if (norm2(rb) > p) then
+            n_checked = n_checked + 1
+            ratio_last = norm2(rb) / p
+            if (n_checked == 1) then
+              ratio_first = ratio_last
+              first_slip_step = row%step
+            end if
+            t_in_last = p
+            err = abs(ratio_last - ratio_formula) / ratio_formula
+            worst = max(worst, err)
+            write (*, '(4x,a,es13.6,a,es13.6,a,f9.6,a,f9.6,a,es9.2)') 'check: all contacts slip, T_out ', norm2(rb), &
+              '  T_in ', p, '  T_out/T_in ', ratio_last, '  formula ', ratio_formula, '  rel. error ', err
+            if (err > tol) call fail('T_out/T_in off the capstan formula by more than the tolerance')
+          end if
+        end if
       case ('many_contacts')
         if (row%step > 1 .and. snap%n < m%check%min_contacts) call fail('step ' // itoa(row%step) // ': ' &
             // itoa(snap%n) // ' active contacts, fewer than min_contacts')
@@ -305,6 +369,19 @@ contains
         ', handover hops ', total_hops, ', worst balance error ', worst
       if (total_hops < m%check%min_nodes_crossed) call fail('the contacts crossed ' // itoa(total_hops) &
           // ' nodes, fewer than min_nodes_crossed = ' // itoa(m%check%min_nodes_crossed))
+    case ('capstan')
+      if (n_corners < 0) call capstan_formula(m, m%check%beam_a)
+      write (*, '(a,i0,a,f8.3,a,f5.3,a,f9.6,a,i0,a,f9.6,a,es9.2)') trim(m%name) // ': check capstan: n = ', &
+        n_corners, ' corners turning ', turn_total * 180.0_dp / pi, ' degrees, mu = ', m%contact%friction, &
+        ': formula T_out/T_in = ', ratio_formula, '; computed at slip (step ', first_slip_step, ') ', ratio_first, &
+        ', rel. error ', abs(ratio_first - ratio_formula) / ratio_formula
+      write (*, '(a,i0,a,f9.6,a,es9.2)') '  slip steps checked ', n_checked, ', last ', ratio_last, &
+        ', worst rel. error ', worst
+      write (*, '(a,es9.2,a,es9.2,a,es9.2)') '  bending length sqrt(EI/T_in) ', &
+        sqrt(bending_stiffness(m, m%check%beam_a) / max(t_in_last, tiny(1.0_dp))), ', shortest element of the rope ', &
+        minval(m%el_l0(m%beam_first_el(m%check%beam_a):m%beam_first_el(m%check%beam_a) &
+                       + m%beam_n_el(m%check%beam_a) - 1)), ', tolerance ', m%check%tolerance
+      if (n_checked < 2) call fail('fewer than two steps with every contact in slip under the pull: no plateau')
     end select
     passed = ok
     write (*, '(a)') trim(m%name) // ': check ' // trim(merge('PASSED', 'FAILED', ok))

@@ -27,7 +27,7 @@ module demo_model
 
   !> What the program checks at the end of a run (&check group; kind '' = none).
   type, public :: check_settings
-    character(len=32) :: kind = ''          !< crossed_beams | cantilever_crossbar | sliding | friction_pull | many_contacts
+    character(len=32) :: kind = ''          !< crossed_beams | cantilever_crossbar | sliding | friction_pull | many_contacts | capstan
     integer :: beam_a = 1, beam_b = 2       !< the loaded (or moving) beam and the other one
     real(dp) :: tolerance = 0.01_dp         !< relative tolerance of the closed form
     real(dp) :: min_rate = 1.8_dp           !< quadratic convergence: least rate where the active set is fixed

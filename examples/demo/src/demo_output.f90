@@ -11,6 +11,11 @@
 !>   <name>.pvd        the collection of those files by load factor
 !>   <name>_history.csv, <name>_convergence.csv,
 !>   <name>_contacts.csv (with contact: every active contact of every step)
+!>   <name>.gp, <name>.png  a gnuplot script (force histories or the monitored
+!>                     motion against the load factor; the residual of every
+!>                     Newton iteration) and, when gnuplot is installed
+!>                     (command -v gnuplot), the plot it draws; without
+!>                     gnuplot the run says so once and writes the script only
 !> The .pvd and the CSV files are written only when the whole run succeeded,
 !> and the stale ones of an earlier run are deleted when a run starts: a
 !> failed run never leaves a result that looks complete.
@@ -37,6 +42,9 @@ module demo_output
   end type contact_row
   integer :: n_rows = 0
   type(contact_row), allocatable :: rows(:)
+
+  !> gnuplot: 0 not looked for yet, 1 found, -1 not installed (said once)
+  integer, save :: gnuplot_state = 0
 
 contains
 
@@ -65,6 +73,9 @@ contains
     call remove(trim(dir) // '/' // trim(name) // '_history.csv')
     call remove(trim(dir) // '/' // trim(name) // '_convergence.csv')
     call remove(trim(dir) // '/' // trim(name) // '_contacts.csv')
+    call remove(trim(dir) // '/' // trim(name) // '.gp')
+    call remove(trim(dir) // '/' // trim(name) // '.png')
+    call remove(trim(dir) // '/' // trim(name) // '_gnuplot.log')
   end subroutine output_remove_stale
 
   subroutine remove(path)
@@ -254,6 +265,7 @@ contains
         end associate
       end do
       close (u)
+      call output_plot(m)
     end if
 
     if (m%vtk) then
@@ -272,5 +284,99 @@ contains
       close (u)
     end if
   end subroutine output_finish
+
+  !> Writes <name>.gp next to the CSV files and, when gnuplot is installed,
+  !> runs it in the output directory to draw <name>.png: top, the sums of
+  !> f_N and |T| against the load factor (with contact) or the motion of the
+  !> monitored node (without); bottom, the residual norm of every Newton
+  !> iteration of the run (log scale). Without gnuplot the first call says
+  !> so and no call runs anything; a failing gnuplot is reported, never
+  !> fatal (its messages go to <name>_gnuplot.log).
+  subroutine output_plot(m)
+    type(scene_model), intent(in) :: m
+    character(len=:), allocatable :: path, name, dir
+    integer :: u, ios, stat, cstat
+    character(len=256) :: cmsg
+
+    name = trim(m%name)
+    dir = trim(m%out_dir)
+    path = output_path(m, '.gp')
+    open (newunit=u, file=path, status='replace', action='write', iostat=ios)
+    if (ios /= 0) call fatal(path // ': cannot write')
+    write (u, '(a)') '# gnuplot script written by b2b_demo for scene ' // name // ': run it in this directory'
+    write (u, '(a)') '# (gnuplot ' // name // '.gp) to draw ' // name // '.png from the CSV files.'
+    write (u, '(a)') 'if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {'
+    write (u, '(a)') '  set terminal pngcairo size 900,900 noenhanced'
+    write (u, '(a)') '} else {'
+    write (u, '(a)') '  set terminal png size 900,900 noenhanced'
+    write (u, '(a)') '}'
+    write (u, '(a)') 'set output "' // name // '.png"'
+    write (u, '(a)') 'set datafile separator ","'
+    write (u, '(a)') 'set key autotitle columnhead'
+    write (u, '(a)') 'set grid'
+    write (u, '(a)') 'set key below'
+    write (u, '(a)') 'set multiplot layout 2,1 title "' // name // ': ' // quote_free(m%title) // '"'
+    write (u, '(a)') 'set xlabel "load factor"'
+    if (m%contact%enabled) then
+      write (u, '(a)') 'set ylabel "force"'
+      write (u, '(a)') 'set title "contact force histories (sums over the active contacts)"'
+      write (u, '(a)') 'plot "' // name // '_history.csv" using 2:15 with linespoints title "f_N", \'
+      write (u, '(a)') '     "' // name // '_history.csv" using 2:16 with linespoints title "|T| (friction)"'
+    else
+      write (u, '(a)') 'set ylabel "displacement"'
+      write (u, '(a)') 'set title "motion of the monitored node"'
+      write (u, '(a)') 'plot "' // name // '_history.csv" using 2:7 with linespoints title "ux", \'
+      write (u, '(a)') '     "' // name // '_history.csv" using 2:8 with linespoints title "uy", \'
+      write (u, '(a)') '     "' // name // '_history.csv" using 2:9 with linespoints title "uz"'
+    end if
+    write (u, '(a)') 'set title "convergence: residual norm of every Newton iteration"'
+    write (u, '(a)') 'set xlabel "Newton iteration (all steps in order)"'
+    write (u, '(a)') 'set ylabel "|r|"'
+    write (u, '(a)') 'set logscale y'
+    write (u, '(a)') 'set format y "%.0e"'
+    write (u, '(a)') 'plot "' // name // '_convergence.csv" using 0:($4 > 0 ? $4 : 1/0) with linespoints pt 7 ps 0.4 ' &
+                     // 'title "|r|", \'
+    write (u, '(a,es10.3,a)') '     "' // name // '_convergence.csv" using 0:($5 * ', m%tol, ') with lines title ' &
+      // '"tol x scale (converged below it or at the round-off floor)"'
+    write (u, '(a)') 'unset multiplot'
+    close (u)
+
+    if (gnuplot_state == 0) then
+      stat = 1
+      cstat = 0
+      call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=stat, cmdstat=cstat)
+      gnuplot_state = merge(1, -1, cstat == 0 .and. stat == 0)
+      if (gnuplot_state < 0) write (*, '(a)') 'b2b_demo: gnuplot not found (command -v gnuplot): no PNG plots, ' &
+        // 'only the gnuplot scripts <scene>.gp next to the CSV files'
+    end if
+    if (gnuplot_state < 0) return
+    if (index(dir, '''') > 0) then
+      write (*, '(a)') 'b2b_demo: output directory name contains a quote; ' // name // '.png not drawn (run gnuplot ' &
+        // name // '.gp there)'
+      return
+    end if
+    stat = 1
+    cstat = 0
+    cmsg = ''
+    call execute_command_line('cd ''' // dir // ''' && gnuplot ''' // name // '.gp'' > ''' // name &
+                              // '_gnuplot.log'' 2>&1', exitstat=stat, cmdstat=cstat, cmdmsg=cmsg)
+    if (cstat /= 0 .or. stat /= 0) then
+      write (*, '(a)') 'b2b_demo: gnuplot failed on ' // path // ' (see ' // output_path(m, '_gnuplot.log') &
+        // '); no plot, the run is not affected'
+    else
+      write (*, '(a)') trim(m%name) // ': plot ' // output_path(m, '.png')
+    end if
+  end subroutine output_plot
+
+  !> The text with its double quotes replaced (for a gnuplot string).
+  pure function quote_free(text) result(t)
+    character(len=*), intent(in) :: text
+    character(len=len_trim(text)) :: t
+    integer :: i
+    t = text(1:len_trim(text))
+    do i = 1, len(t)
+      if (t(i:i) == '"') t(i:i) = ''''
+    end do
+  end function quote_free
 
 end module demo_output

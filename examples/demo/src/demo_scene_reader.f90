@@ -20,7 +20,7 @@ module demo_scene_reader
   character(len=*), parameter :: groups_valid = 'scene material beam support load motion output contact check'
   character(len=*), parameter :: keys_scene = 'title n_steps max_iter max_cutbacks tol solver'
   character(len=*), parameter :: keys_material = 'id E nu radius A Iy Iz J'
-  character(len=*), parameter :: keys_beam = 'shape p1 p2 centre start axis angle n_el material group up'
+  character(len=*), parameter :: keys_beam = 'shape p1 p2 centre start axis angle points n_el material group up'
   character(len=*), parameter :: keys_support = 'beam node all dofs'
   character(len=*), parameter :: keys_load = 'beam node all force moment ramp'
   character(len=*), parameter :: keys_motion = 'beam node dof value ramp'
@@ -31,6 +31,7 @@ module demo_scene_reader
                                               // 'min_nodes_crossed'
 
   integer, parameter :: max_pairs = 64
+  integer, parameter :: max_poly_points = 64   !< corner points of a 'polyline' beam
 
   type(nml_index) :: idx   ! where the keys are, for messages
 
@@ -227,10 +228,10 @@ contains
     integer, intent(in) :: mat_id(:)
     real(dp), intent(in) :: mat_stiff(:, :), mat_radius(:)
     character(len=16) :: shape
-    real(dp) :: p1(3), p2(3), centre(3), start(3), axis(3), angle, up(3)
+    real(dp) :: p1(3), p2(3), centre(3), start(3), axis(3), angle, up(3), points(3, max_poly_points)
     integer :: n_el, material, group
-    namelist /beam/ shape, p1, p2, centre, start, axis, angle, n_el, material, group, up
-    integer :: n_beam, ios, b, i, first, nn, ne, el, n_pts
+    namelist /beam/ shape, p1, p2, centre, start, axis, angle, points, n_el, material, group, up
+    integer :: n_beam, ios, b, i, first, nn, ne, el, n_pts, n_el_beam
     real(dp), allocatable :: pts(:, :), all_x(:, :), b_up(:, :)
     character(len=256) :: iomsg
     logical :: ok, closed
@@ -247,14 +248,16 @@ contains
     ne = 0
     do b = 1, n_beam
       shape = ''; p1 = unset; p2 = unset; centre = unset; start = unset; axis = unset; angle = unset
-      n_el = iunset; material = 1; group = 1; up = unset
+      n_el = iunset; material = 1; group = 1; up = unset; points = unset
       read (u, nml=beam, iostat=ios, iomsg=iomsg)
       if (ios /= 0) call read_failed('beam', b, ios, iomsg)
-      if (len_trim(shape) == 0) call bad('beam', b, 'shape', 'missing: set shape = ''line'', ''arc'' or ''ring''')
+      if (len_trim(shape) == 0) call bad('beam', b, 'shape', 'missing: set shape = ''line'', ''arc'', ''ring''' &
+                                         // ' or ''polyline''')
       call need_int('beam', b, 'n_el', n_el)
       if (n_el < 1) call bad('beam', b, 'n_el', 'is ' // str(n_el) // '; it must be at least 1')
       shape = lower(shape)
       closed = .false.
+      n_el_beam = n_el
       select case (shape)
       case ('line')
         call need_real('beam', b, 'p1', p1)
@@ -287,8 +290,13 @@ contains
         end if
         pts = arc_points(centre, start, axis, angle, n_el, n_pts)
         if (up(1) < -0.5_dp * huge(1.0_dp)) up = axis   ! default: local z normal to the plane of the arc
+      case ('polyline')
+        ! points = x1, y1, z1, x2, y2, z2, ...: straight legs between them,
+        ! n_el elements per leg; the corners are nodes (kinks, stress-free)
+        call polyline(points, n_el, pts, up)
+        n_el_beam = size(pts, 2) - 1
       case default
-        call bad('beam', b, 'shape', '''' // trim(shape) // ''' is not one of line, arc, ring')
+        call bad('beam', b, 'shape', '''' // trim(shape) // ''' is not one of line, arc, ring, polyline')
       end select
       if (.not. any(mat_id == material)) call bad('beam', b, 'material', 'no &material with id = ' // str(material))
       i = findloc(mat_id, material, dim=1)
@@ -297,7 +305,7 @@ contains
       m%beam_first_node(b) = nn + 1
       m%beam_n_nodes(b) = size(pts, 2)
       m%beam_first_el(b) = ne + 1
-      m%beam_n_el(b) = n_el
+      m%beam_n_el(b) = n_el_beam
       m%beam_closed(b) = closed
       m%beam_radius(b) = mat_radius(i)
       m%beam_group(b) = group
@@ -305,10 +313,10 @@ contains
       all_x = reshape([all_x, pts], [3, nn + size(pts, 2)])
       first = nn
       nn = nn + size(pts, 2)
-      m%conn = reshape([m%conn, new_conn(first, n_el, size(pts, 2), closed)], [2, ne + n_el])
-      m%el_beam = [m%el_beam, spread(b, 1, n_el)]
-      m%el_stiff = reshape([m%el_stiff, spread(mat_stiff(:, i), 2, n_el)], [4, ne + n_el])
-      ne = ne + n_el
+      m%conn = reshape([m%conn, new_conn(first, n_el_beam, size(pts, 2), closed)], [2, ne + n_el_beam])
+      m%el_beam = [m%el_beam, spread(b, 1, n_el_beam)]
+      m%el_stiff = reshape([m%el_stiff, spread(mat_stiff(:, i), 2, n_el_beam)], [4, ne + n_el_beam])
+      ne = ne + n_el_beam
     end do
     m%n_nodes = nn
     m%n_elements = ne
@@ -332,6 +340,55 @@ contains
     m%fixed = .false.
     m%prescribed = 0.0_dp
     m%fext = 0.0_dp
+
+  contains
+
+    !> Nodes of a 'polyline' beam: the given points (at least two, each
+    !> distinct from the one before) joined by straight legs of n_per_leg
+    !> equal elements. Default cross-section axis: the normal of the plane
+    !> of the first corner, or as for a line when the points are collinear.
+    subroutine polyline(points, n_per_leg, pts, up)
+      real(dp), intent(in) :: points(:, :)
+      integer, intent(in) :: n_per_leg
+      real(dp), allocatable, intent(out) :: pts(:, :)
+      real(dp), intent(inout) :: up(3)
+      integer :: n_corner, j, k
+      real(dp) :: nrm(3)
+      n_corner = 0
+      do j = 1, size(points, 2)
+        if (all(points(:, j) < -0.5_dp * huge(1.0_dp))) exit
+        if (any(points(:, j) < -0.5_dp * huge(1.0_dp))) call bad('beam', b, 'points', 'point ' // str(j) &
+            // ' is incomplete: give points = x1, y1, z1, x2, y2, z2, ... (three components each)')
+        n_corner = j
+      end do
+      if (n_corner < 2) call bad('beam', b, 'points', 'needs at least two points: points = x1, y1, z1, x2, y2, z2, ...')
+      do j = 2, n_corner
+        if (.not. (norm2(points(:, j) - points(:, j - 1)) > 0.0_dp)) call bad('beam', b, 'points', 'point ' &
+            // str(j) // ' equals the point before it: a leg needs two distinct points')
+      end do
+      allocate (pts(3, (n_corner - 1) * n_per_leg + 1))
+      pts(:, 1) = points(:, 1)
+      do j = 1, n_corner - 1
+        do k = 1, n_per_leg
+          pts(:, (j - 1) * n_per_leg + k + 1) = points(:, j) + (points(:, j + 1) - points(:, j)) &
+                                                * (real(k, dp) / real(n_per_leg, dp))
+        end do
+        pts(:, j * n_per_leg + 1) = points(:, j + 1)   ! the corners exactly as given
+      end do
+      if (up(1) > -0.5_dp * huge(1.0_dp)) return
+      up = [0.0_dp, 0.0_dp, 1.0_dp]
+      associate (d1 => points(:, 2) - points(:, 1))
+        if (norm2(cross(d1, up)) < 1.0e-6_dp * norm2(d1)) up = [0.0_dp, 1.0_dp, 0.0_dp]
+        do j = 2, n_corner - 1
+          nrm = cross(points(:, j) - points(:, j - 1), points(:, j + 1) - points(:, j))
+          if (norm2(nrm) > 1.0e-6_dp * norm2(points(:, j) - points(:, j - 1)) * norm2(points(:, j + 1) - points(:, j))) &
+            then
+            up = nrm / norm2(nrm)
+            exit
+          end if
+        end do
+      end associate
+    end subroutine polyline
   end subroutine read_beams
 
   !> Element connectivity of a chain of n_pts nodes after node `first`.
@@ -618,9 +675,9 @@ contains
     read (u, nml=check, iostat=ios, iomsg=iomsg)
     if (ios /= 0) call read_failed('check', 1, ios, iomsg)
     kind = lower(kind)
-    if (.not. in_list(kind, 'crossed_beams cantilever_crossbar sliding friction_pull many_contacts')) &
+    if (.not. in_list(kind, 'crossed_beams cantilever_crossbar sliding friction_pull many_contacts capstan')) &
       call bad('check', 1, 'kind', '''' // trim(kind) // ''' is not one of crossed_beams, cantilever_crossbar, ' &
-               // 'sliding, friction_pull, many_contacts')
+               // 'sliding, friction_pull, many_contacts, capstan')
     if (.not. m%contact%enabled) call bad('check', 1, 'kind', 'a contact check needs a &contact group')
     if (beam_a < 1 .or. beam_a > m%n_beams) call bad('check', 1, 'beam_a', 'beam ' // str(beam_a) // ' does not exist')
     if (beam_b < 1 .or. beam_b > m%n_beams .or. beam_b == beam_a) call bad('check', 1, 'beam_b', 'beam ' &
