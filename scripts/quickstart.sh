@@ -138,15 +138,17 @@ case "$mode" in
     #    pass about 9 and 11 million of them in loops (one system call each,
     #    expensive under valgrind). They run under ASan+UBSan in the sanitize
     #    step; include them here once they assert less often;
-    #  - demo_trade_table_short: 16 demo solves (40 s natively, over 20 min
-    #    under valgrind) of the Fortran host; every library path it takes is
-    #    in the scene tests, which do run here, and it runs under ASan+UBSan.
+    #  - demo_trade_table_short (16 solves of the demo host) and
+    #    demo_contact_tangent_many_contacts (finite differences of the host's
+    #    500-equation assembly, two assemblies per column): 20 to 30 min each
+    #    under valgrind; every library path they take is in the scene tests,
+    #    which do run here, and they run under ASan+UBSan.
     cmake -S . -B build-memcheck -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       "-DMEMORYCHECK_COMMAND=$(command -v valgrind)" \
       "-DMEMORYCHECK_SUPPRESSIONS_FILE=$PWD/tests/memcheck.supp" \
       "-DMEMORYCHECK_COMMAND_OPTIONS=--error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,possible --show-leak-kinds=definite,possible --num-callers=30"
     cmake --build build-memcheck -j "$jobs"
     CK_FORK=no ctest --test-dir build-memcheck --output-on-failure -j "$jobs" -T memcheck \
-      -LE 'consumer|abi' -E 'stop_without_ierr|^check_(curve|pair)_bad_input$|^demo_trade_table_short$'
+      -LE 'consumer|abi' -E 'stop_without_ierr|^check_(curve|pair)_bad_input$|^demo_trade_table_short$|^demo_contact_tangent_many_contacts$'
     ;;
 esac
