@@ -48,6 +48,7 @@ module demo_checks
   use demo_model, only: scene_model, external_force
   use demo_history, only: step_row
   use demo_contact_hook, only: contact_snapshot
+  use demo_errors, only: str
   implicit none
   private
   public :: check_step, check_finish
@@ -146,7 +147,7 @@ contains
     integer :: el
     el = m%beam_first_el(b)
     ei = m%el_stiff(3, el)
-    if (abs(m%el_stiff(4, el) - ei) > 1.0e-12_dp * ei) call fail('beam ' // itoa(b) // ' needs Iy = Iz for this check')
+    if (abs(m%el_stiff(4, el) - ei) > 1.0e-12_dp * ei) call fail('beam ' // str(b) // ' needs Iy = Iz for this check')
   end function bending_stiffness
 
   !> The capstan formula from beam b's initial polygon: a corner at every
@@ -177,13 +178,6 @@ contains
     if (n_corners == 0) call fail('beam_a has no corner: no capstan')
   end subroutine capstan_formula
 
-  function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    s = trim(buf)
-  end function itoa
 
   !> Called after every converged planned step.
   subroutine check_step(m, row, snap, fint)
@@ -255,11 +249,11 @@ contains
               n_slow = n_slow + 1
               write (*, '(4x,a)') 'note: rate below min_rate with straight segments (reported, not a failure)'
             else
-              call fail('step ' // itoa(row%step) // ': convergence rate below min_rate with an unchanged active set')
+              call fail('step ' // str(row%step) // ': convergence rate below min_rate with an unchanged active set')
             end if
           end if
         end if
-        if (snap%n == 0) call fail('step ' // itoa(row%step) // ': no active contact (the beam lost contact)')
+        if (snap%n == 0) call fail('step ' // str(row%step) // ': no active contact (the beam lost contact)')
       case ('friction_pull')
         mu = m%contact%friction
         if (snap%n > 0) then
@@ -308,8 +302,8 @@ contains
           end if
         end if
       case ('many_contacts')
-        if (row%step > 1 .and. snap%n < m%check%min_contacts) call fail('step ' // itoa(row%step) // ': ' &
-            // itoa(snap%n) // ' active contacts, fewer than min_contacts')
+        if (row%step > 1 .and. snap%n < m%check%min_contacts) call fail('step ' // str(row%step) // ': ' &
+            // str(snap%n) // ' active contacts, fewer than min_contacts')
         total_hops = total_hops + row%handovers
         fc = 0.0_dp
         do k = 1, snap%n
@@ -355,8 +349,8 @@ contains
       if (trim(m%contact%curve) == 'linear') write (*, '(a,i0,a,i0,a)') '  straight segments (reported, not ' &
         // 'failures): ', total_cut, ' cut-backs, ', n_slow, ' steps with a rate below min_rate'
       if (n_rate == 0) call fail('no step to measure the convergence rate on')
-      if (seg_max - seg_min < m%check%min_nodes_crossed) call fail('the contact crossed ' // itoa(max(seg_max - seg_min, &
-          0)) // ' nodes of beam_b, fewer than min_nodes_crossed = ' // itoa(m%check%min_nodes_crossed))
+      if (seg_max - seg_min < m%check%min_nodes_crossed) call fail('the contact crossed ' // str(max(seg_max - seg_min, &
+          0)) // ' nodes of beam_b, fewer than min_nodes_crossed = ' // str(m%check%min_nodes_crossed))
     case ('friction_pull')
       write (*, '(a,i0,a,i0,a,i0,a,es9.2,a,es9.2)') trim(m%name) // ': check friction_pull: stick steps ', n_stick, &
         ', slip steps forward ', n_slip_pos, ', after reversal ', n_slip_neg, '; worst plateau error ', worst, &
@@ -367,8 +361,8 @@ contains
     case ('many_contacts')
       write (*, '(a,i0,a,i0,a,es9.2)') trim(m%name) // ': check many_contacts: fewest active contacts ', min_active, &
         ', handover hops ', total_hops, ', worst balance error ', worst
-      if (total_hops < m%check%min_nodes_crossed) call fail('the contacts crossed ' // itoa(total_hops) &
-          // ' nodes, fewer than min_nodes_crossed = ' // itoa(m%check%min_nodes_crossed))
+      if (total_hops < m%check%min_nodes_crossed) call fail('the contacts crossed ' // str(total_hops) &
+          // ' nodes, fewer than min_nodes_crossed = ' // str(m%check%min_nodes_crossed))
     case ('capstan')
       if (n_corners < 0) call capstan_formula(m, m%check%beam_a)
       write (*, '(a,i0,a,f8.3,a,f5.3,a,f9.6,a,i0,a,f9.6,a,es9.2)') trim(m%name) // ': check capstan: n = ', &

@@ -6,6 +6,7 @@
 !> the line of any key (or of the group, for a missing one) and reject
 !> unknown groups and keys with the list of valid ones before reading.
 module demo_nml_scan
+  use demo_errors, only: str
   implicit none
   private
 
@@ -86,8 +87,8 @@ contains
             call read_word(line, j, word)
             if (in_group) then
               ok = .false.
-              msg = file // ':' // itoa(lineno) // ': group &' // trim(word) // ' starts before &' &
-                    // trim(current) // ' (line ' // itoa(open_line) // ') is closed: end each group with /'
+              msg = file // ':' // str(lineno) // ': group &' // trim(word) // ' starts before &' &
+                    // trim(current) // ' (line ' // str(open_line) // ') is closed: end each group with /'
               close (u)
               return
             end if
@@ -117,7 +118,7 @@ contains
               if (line(j:j) == '=') then
                 if (.not. in_group) then
                   ok = .false.
-                  msg = file // ':' // itoa(lineno) // ': key ' // trim(word) // ' outside a group: put it' &
+                  msg = file // ':' // str(lineno) // ': key ' // trim(word) // ' outside a group: put it' &
                         // ' between &group and /'
                   close (u)
                   return
@@ -135,7 +136,7 @@ contains
     close (u)
     if (in_group) then
       ok = .false.
-      msg = file // ':' // itoa(open_line) // ': group &' // trim(current) // ' is not closed: end it with /'
+      msg = file // ':' // str(open_line) // ': group &' // trim(current) // ' is not closed: end it with /'
     end if
   end subroutine nml_scan
 
@@ -274,12 +275,5 @@ contains
     end do
   end function lower
 
-  pure function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    s = trim(buf)
-  end function itoa
 
 end module demo_nml_scan

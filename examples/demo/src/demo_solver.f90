@@ -37,7 +37,7 @@ module demo_solver
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
-  public :: solve_scene, step_callback, newton_state
+  public :: solve_scene, step_callback, newton_state, perturb_dof
 
   abstract interface
     !> Called after each planned step has converged (tests check the state).
@@ -253,6 +253,23 @@ contains
       end do
     end do
   end subroutine newton
+
+  !> Moves one generalized dof d (1..6) of a node by s: a translation along
+  !> axis d, or a spin s about global axis d - 3 (as update_node does for a
+  !> whole increment). For tests that difference the assembled residual.
+  subroutine perturb_dof(m, node, d, s)
+    type(scene_model), intent(inout) :: m
+    integer, intent(in) :: node, d
+    real(dp), intent(in) :: s
+    real(dp) :: w(3)
+    if (d <= 3) then
+      m%x(d, node) = m%x(d, node) + s
+    else
+      w = 0.0_dp
+      w(d - 3) = s
+      m%q(:, node) = quat_spin_update(m%q(:, node), w)
+    end if
+  end subroutine perturb_dof
 
   subroutine update_node(m, e, node, du)
     type(scene_model), intent(inout) :: m

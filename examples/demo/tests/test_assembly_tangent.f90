@@ -17,7 +17,8 @@ program test_assembly_tangent
   use demo_numbering, only: rcm_order, number_equations, half_bandwidth
   use demo_linear_system, only: linear_system, sys_setup
   use demo_assembly, only: assemble
-  use demo_rotation, only: quat_from_rotvec, quat_spin_update
+  use demo_rotation, only: quat_from_rotvec
+  use demo_solver, only: perturb_dof
   implicit none
   type(scene_model) :: m
   type(linear_system) :: dense, band, narrow
@@ -51,10 +52,10 @@ program test_assembly_tangent
     do d = 1, ndf
       j = eq(d, node)
       if (j == 0) cycle
-      call perturb(node, d, +h)
+      call perturb_dof(m, node, d, +h)
       call assemble(m, eq, 1.0_dp, .false., band, rp, fint)
       m%x = x_keep; m%q = q_keep
-      call perturb(node, d, -h)
+      call perturb_dof(m, node, d, -h)
       call assemble(m, eq, 1.0_dp, .false., band, rm, fint)
       m%x = x_keep; m%q = q_keep
       kfd(:, j) = (rp - rm) / (2.0_dp * h)
@@ -100,20 +101,5 @@ program test_assembly_tangent
   deallocate (order, eq, r, rp, rm, fint, kfd, kband, x_keep, q_keep)
   if (.not. ok) error stop 'test_assembly_tangent: FAILED'
   write (*, '(a)') 'assembly: all checks passed'
-
-contains
-
-  subroutine perturb(node, d, s)
-    integer, intent(in) :: node, d
-    real(dp), intent(in) :: s
-    real(dp) :: w(3)
-    if (d <= 3) then
-      m%x(d, node) = m%x(d, node) + s
-    else
-      w = 0.0_dp
-      w(d - 3) = s
-      m%q(:, node) = quat_spin_update(m%q(:, node), w)
-    end if
-  end subroutine perturb
 
 end program test_assembly_tangent

@@ -12,11 +12,11 @@ program test_contact_tangent
   use demo_kinds, only: dp, ndf
   use demo_model, only: scene_model
   use demo_scene_reader, only: read_scene
-  use demo_solver, only: solve_scene
+  use demo_solver, only: solve_scene, perturb_dof
   use demo_numbering, only: rcm_order, number_equations, half_bandwidth
   use demo_linear_system, only: linear_system, sys_setup
   use demo_assembly, only: assemble
-  use demo_rotation, only: quat_spin_update
+
   use demo_contact_hook, only: contact_snapshot, contact_hook_snapshot, contact_hook_finish
   implicit none
   type(scene_model) :: m
@@ -63,10 +63,10 @@ program test_contact_tangent
     do d = 1, ndf
       j = eq(d, node)
       if (j == 0) cycle
-      call perturb(node, d, +h)
+      call perturb_dof(m, node, d, +h)
       call assemble(m, eq, 1.0_dp, .false., dummy, rp, fint)
       m%x = x_keep; m%q = q_keep
-      call perturb(node, d, -h)
+      call perturb_dof(m, node, d, -h)
       call assemble(m, eq, 1.0_dp, .false., dummy, rm, fint)
       call contact_hook_snapshot(snap2)
       m%x = x_keep; m%q = q_keep
@@ -92,20 +92,5 @@ program test_contact_tangent
     error stop 1
   end if
   write (*, '(a)') 'contact tangent: passed'
-
-contains
-
-  subroutine perturb(node, d, s)
-    integer, intent(in) :: node, d
-    real(dp), intent(in) :: s
-    real(dp) :: w(3)
-    if (d <= 3) then
-      m%x(d, node) = m%x(d, node) + s
-    else
-      w = 0.0_dp
-      w(d - 3) = s
-      m%q(:, node) = quat_spin_update(m%q(:, node), w)
-    end if
-  end subroutine perturb
 
 end program test_contact_tangent
