@@ -18,6 +18,8 @@
 using b2b::capi::check_finalized;
 using b2b::capi::check_kind;
 using b2b::capi::check_model_finalized;
+using b2b::capi::check_results;
+using b2b::capi::check_tangents;
 using b2b::capi::guarded;
 using b2b::capi::report_model_problem;
 using b2b::capi::Reporter;
@@ -30,6 +32,20 @@ int check_model_finalized(const Reporter& r, const b2b_model* model) {
   if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
   if (!model->m.finalized())
     return r.fail(B2B_ERR_STATE, "the model is not finalized (call b2b_model_finalize first)");
+  return B2B_OK;
+}
+
+int check_results(const Reporter& r, const b2b_model* model) {
+  if (int st = check_model_finalized(r, model)) return st;
+  if (!model->m.has_results())
+    return r.fail(B2B_ERR_STATE, "no update since the model was finalized, reverted or "
+                  "restored (call b2b_model_update first)");
+  return B2B_OK;
+}
+
+int check_tangents(const Reporter& r, const b2b_model* model) {
+  if (!model->m.has_tangents())
+    return r.fail(B2B_ERR_STATE, "the last update was made without tangents (want_tangent 0)");
   return B2B_OK;
 }
 
@@ -95,14 +111,6 @@ int check_setup(const Reporter& r, const b2b_model* model) {
   if (model->m.finalized())
     return r.fail(B2B_ERR_STATE, "the model is finalized: beams and self-contact are set before "
                   "b2b_model_finalize");
-  return B2B_OK;
-}
-
-int check_results(const Reporter& r, const b2b_model* model) {
-  if (int st = check_model_finalized(r, model)) return st;
-  if (!model->m.has_results())
-    return r.fail(B2B_ERR_STATE, "no update since the model was finalized, reverted or "
-                  "restored (call b2b_model_update first)");
   return B2B_OK;
 }
 
@@ -327,8 +335,8 @@ int b2b_model_get_contact(const b2b_model* model, int k, int* nodes, int* pair, 
     if (k < 0 || k >= n)
       return r.fail(B2B_ERR_RANGE, "contact %d does not exist (%d active contacts%s)", k + o, n,
                     n ? "" : ": none");
-    if (tangent != nullptr && !m.has_tangents())
-      return r.fail(B2B_ERR_STATE, "the last update was made without tangents (want_tangent 0)");
+    if (tangent != nullptr)
+      if (int st = check_tangents(r, model)) return st;
     if (tangent != nullptr && ldk < 24)
       return r.fail(B2B_ERR_SIZE, "ldk is %d, the tangent needs at least 24", ldk);
     const md::Contact& c = m.contacts()[k];

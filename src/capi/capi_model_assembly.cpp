@@ -6,7 +6,8 @@
 #include "../model/assembly.hpp"
 #include "model_handle.hpp"
 
-using b2b::capi::check_model_finalized;
+using b2b::capi::check_results;
+using b2b::capi::check_tangents;
 using b2b::capi::guarded;
 using b2b::capi::report_model_problem;
 using b2b::capi::Reporter;
@@ -20,12 +21,9 @@ namespace {
 int check_assembly(const Reporter& r, const b2b_model* model, const int* eq, int ldeq,
                    int eq_base, int n_eq, bool tangent, md::EqMap& map, int kl = -1,
                    int ku = -1) {
-  if (int st = check_model_finalized(r, model)) return st;
-  if (!model->m.has_results())
-    return r.fail(B2B_ERR_STATE, "no update since the model was finalized, reverted or "
-                  "restored (call b2b_model_update first)");
-  if (tangent && !model->m.has_tangents())
-    return r.fail(B2B_ERR_STATE, "the last update was made without tangents (want_tangent 0)");
+  if (int st = check_results(r, model)) return st;
+  if (tangent)
+    if (int st = check_tangents(r, model)) return st;
   if (eq == nullptr) return r.fail(B2B_ERR_NULL, "eq is NULL");
   if (ldeq < 3) return r.fail(B2B_ERR_SIZE, "ldeq is %d (>= 3)", ldeq);
   if (n_eq < 0) return r.fail(B2B_ERR_RANGE, "n_eq is %d (>= 0)", n_eq);

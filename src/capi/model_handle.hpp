@@ -18,6 +18,13 @@ namespace capi {
 // B2B_ERR_NULL for a NULL handle, B2B_ERR_STATE unless finalized.
 int check_model_finalized(const Reporter& r, const b2b_model* model);
 
+// The above, and B2B_ERR_STATE unless an update has results (none since
+// finalize, revert or restore): what reading contacts or assembling needs.
+int check_results(const Reporter& r, const b2b_model* model);
+
+// B2B_ERR_STATE unless the last update computed tangents.
+int check_tangents(const Reporter& r, const b2b_model* model);
+
 // Words a model::Problem (status != 0) for the caller.
 int report_model_problem(const Reporter& r, const b2b_model* model, const model::Problem& pb);
 
