@@ -10,21 +10,20 @@
  *            twist of 2 degrees at the rim, staggered nodes), 16 segments
  *            of length 0.5: the hard case for point-wise contact and search.
  *
- *   model_scaling [--quick] [--max N] [--scene network|bundle]
+ *   model_scaling [--quick] [--search-only] [--max N] [--scene network|bundle]
  *
  * Sizes 10^3 .. 10^6 segments (--quick: 10^3 and 10^4, the ctest smoke test,
  * one repetition, the bundle's model updates at 10^3 only; --max N: sizes up
- * to N). Times are the best of 3 repetitions up to 10^4 segments, of 2 for
+ * to N; --search-only: the search table alone, no model updates). Times are the best of 3 repetitions up to 10^4 segments, of 2 for
  * the searches at 10^5, else of 1. The model's updates are skipped at a size where the memory per
  * segment measured at the size before, times the segments, exceeds 80% of
  * MemAvailable (the table says so). For each scene and size it measures
  *   - the search build on the model's own boxes (this program compiles
- *     src/model/search.cpp in and calls the internal BoxTree): the BVH build
- *     plus the query for all overlapping pairs, one thread;
+ *     src/model/search.cpp in and calls the internal BoxTree) with each of
+ *     its backends: the BVH, and Boost.Geometry's packed R-tree (when the
+ *     Boost headers were found at configure time); the index build plus the
+ *     query for all overlapping pairs, one thread;
  *   - a brute-force search (all box pairs) up to 10^4 segments;
- *   - Boost.Geometry's packed R-tree (bgi::rtree, packing constructor) on
- *     the same boxes: build plus one intersects query per box (when the
- *     Boost headers were found at configure time);
  *   - through the public API: the first b2b_model_update (search build and
  *     evaluation), an update on slightly moved coordinates that reuses the
  *     candidates (B2B_COUNT_SEARCH_BUILDS must not grow) with "threads" 1
@@ -60,9 +59,6 @@
 #include "model/search.hpp"
 
 #ifdef B2B_SCALING_HAVE_BOOST
-#include <boost/geometry/geometries/box.hpp>
-#include <boost/geometry/geometries/point.hpp>
-#include <boost/geometry/index/rtree.hpp>
 #include <boost/version.hpp>
 #endif
 
@@ -281,50 +277,25 @@ Pairs brute_force(const std::vector<Box>& boxes, Accept accept) {
   return out;
 }
 
-#ifdef B2B_SCALING_HAVE_BOOST
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using BPoint = bg::model::point<double, 3, bg::cs::cartesian>;
-using BBox = bg::model::box<BPoint>;
-using BValue = std::pair<BBox, int>;
-using BTree = bgi::rtree<BValue, bgi::rstar<16>>;
-
-std::vector<BValue> boost_values(const std::vector<Box>& boxes) {
-  std::vector<BValue> v;
-  v.reserve(boxes.size());
-  for (size_t k = 0; k < boxes.size(); ++k) {
-    const Box& b = boxes[k];
-    v.emplace_back(BBox(BPoint(b.lo[0], b.lo[1], b.lo[2]), BPoint(b.hi[0], b.hi[1], b.hi[2])),
-                   static_cast<int>(k));
+// The library's own search (src/model/search.cpp, compiled in) with the
+// given backend: the best of reps runs, its build and query times.
+void time_search(const std::vector<Box>& boxes, b2b::model::BoxTree::Backend backend, Accept accept,
+                 int reps, Pairs& out, double& t_build, double& t_query) {
+  b2b::model::BoxTree tree;
+  double best = HUGE_VAL;
+  for (int k = 0; k < reps; ++k) {
+    const double t0 = now_s();
+    tree.build(boxes, backend);
+    const double t1 = now_s();
+    tree.overlapping_pairs(accept, 1, out);
+    const double t2 = now_s();
+    if (t2 - t0 < best) {
+      best = t2 - t0;
+      t_build = t1 - t0;
+      t_query = t2 - t1;
+    }
   }
-  return v;
 }
-
-// Packed tree, one intersects query per box; the pairs (i, j > i) sorted as
-// the BVH gives them. Times of the build and of the queries.
-void boost_search(const std::vector<BValue>& values, Accept accept, Pairs& out,
-                  double& t_build, double& t_query) {
-  out.clear();
-  const double t0 = now_s();
-  const BTree tree(values.begin(), values.end());
-  const double t1 = now_s();
-  std::vector<BValue> hits;
-  std::vector<int> js;
-  const int n = static_cast<int>(values.size());
-  for (int i = 0; i < n; ++i) {
-    hits.clear();
-    tree.query(bgi::intersects(values[i].first), std::back_inserter(hits));
-    js.clear();
-    for (const BValue& h : hits)
-      if (h.second > i && accept(i, h.second)) js.push_back(h.second);
-    std::sort(js.begin(), js.end());
-    for (int j : js) out.emplace_back(i, j);
-  }
-  const double t2 = now_s();
-  t_build = t1 - t0;
-  t_query = t2 - t1;
-}
-#endif
 
 // ---------------------------------------------------------------- memory
 
@@ -511,12 +482,14 @@ std::string cpu_name() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, search_only = false;
   long max_n = 1000000;
   int scene_mask = 3;  // 1: network, 2: bundle
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--quick") == 0) {
       quick = true;
+    } else if (std::strcmp(argv[k], "--search-only") == 0) {
+      search_only = true;
     } else if (std::strcmp(argv[k], "--max") == 0 && k + 1 < argc) {
       max_n = std::strtol(argv[++k], nullptr, 10);
     } else if (std::strcmp(argv[k], "--scene") == 0 && k + 1 < argc) {
@@ -527,7 +500,7 @@ int main(int argc, char** argv) {
         return 2;
       }
     } else {
-      std::fprintf(stderr, "usage: %s [--quick] [--max N] [--scene network|bundle]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--quick] [--search-only] [--max N] [--scene network|bundle]\n", argv[0]);
       return 2;
     }
   }
@@ -588,23 +561,8 @@ int main(int argc, char** argv) {
 
       // BVH: build + all pairs, one thread, best of reps.
       Pairs bvh;
-      {
-        b2b::model::BoxTree tree;
-        row.t_tree = row.t_query = HUGE_VAL;
-        double best = HUGE_VAL;
-        for (int k = 0; k < reps; ++k) {
-          const double t0 = now_s();
-          tree.build(boxes);
-          const double t1 = now_s();
-          tree.overlapping_pairs(accept, 1, bvh);
-          const double t2 = now_s();
-          if (t2 - t0 < best) {
-            best = t2 - t0;
-            row.t_tree = t1 - t0;
-            row.t_query = t2 - t1;
-          }
-        }
-      }
+      time_search(boxes, b2b::model::BoxTree::Backend::kBvh, accept, reps, bvh, row.t_tree,
+                  row.t_query);
       row.pairs = static_cast<long>(bvh.size());
       if (n <= kBruteMax) {
         const double t0 = now_s();
@@ -614,23 +572,16 @@ int main(int argc, char** argv) {
       }
 #ifdef B2B_SCALING_HAVE_BOOST
       {
-        const std::vector<BValue> values = boost_values(boxes);
         Pairs bp;
-        double best = HUGE_VAL;
-        for (int k = 0; k < reps; ++k) {
-          double tb, tq;
-          boost_search(values, accept, bp, tb, tq);
-          if (tb + tq < best) {
-            best = tb + tq;
-            row.t_boost_build = tb;
-            row.t_boost_query = tq;
-          }
-        }
+        time_search(boxes, b2b::model::BoxTree::Backend::kRTree, accept, reps, bp,
+                    row.t_boost_build, row.t_boost_query);
         if (bp != bvh) fail("Boost R-tree pairs differ from the BVH's");
       }
 #endif
       // The model: skipped where it cannot run here (see the header comment).
-      if (quick && sc_id == 1 && n > 1000) {
+      if (search_only) {
+        row.model_skip = "left out (--search-only)";
+      } else if (quick && sc_id == 1 && n > 1000) {
         row.model_skip = "left out in --quick";
       } else if (last_mem_per_seg[sc_id] > 0 &&
                  last_mem_per_seg[sc_id] * n > 0.8 * 1024.0 * mem_available_kb()) {

@@ -10,8 +10,7 @@ namespace {
 constexpr int kLeafSize = 4;
 
 // 21 bits of v spread to every third bit of a 63-bit code.
-// (Used by the BVH only: unused when the R-tree is built in.)
-[[maybe_unused]] uint64_t spread_bits(uint64_t v) {
+uint64_t spread_bits(uint64_t v) {
   v &= 0x1fffff;
   v = (v | v << 32) & 0x1f00000000ffffULL;
   v = (v | v << 16) & 0x1f0000ff0000ffULL;
@@ -41,20 +40,35 @@ double box_distance(const Box& a, const Box& b) {
   return d;
 }
 
-void BoxTree::build(const std::vector<Box>& boxes) {
+void BoxTree::build(const std::vector<Box>& boxes, Backend backend) {
   boxes_ = &boxes;
-  const int n = static_cast<int>(boxes.size());
-  order_.resize(n);
   nodes_.clear();
+  sort_by_morton_code();
+  use_rtree_ = false;
 #ifdef B2B_HAVE_BOOST_GEOMETRY
-  std::vector<BValue> values;
-  values.reserve(n);
-  for (int k = 0; k < n; ++k) values.emplace_back(to_bbox(boxes[k]), k);
-  rtree_ = decltype(rtree_)(values.begin(), values.end());  // the packing constructor
-  for (int k = 0; k < n; ++k) order_[k] = k;
+  if (backend == Backend::kRTree) {
+    use_rtree_ = true;
+    std::vector<BValue> values;
+    values.reserve(boxes.size());
+    for (int k : order_) values.emplace_back(to_bbox(boxes[k]), k);
+    rtree_ = decltype(rtree_)(values.begin(), values.end());  // the packing constructor
+    return;
+  }
+  rtree_.clear();
 #else
+  (void)backend;
+#endif
+  const int n = static_cast<int>(boxes.size());
   if (n == 0) return;
-  // Morton codes of the centres, in the centres' own bounding box.
+  nodes_.reserve(2 * (n / kLeafSize + 1));
+  build_range(0, n);
+}
+
+// order_: the box indices sorted by the Morton code of the box centres,
+// taken in the centres' own bounding box (ties by index).
+void BoxTree::sort_by_morton_code() {
+  const std::vector<Box>& boxes = *boxes_;
+  const int n = static_cast<int>(boxes.size());
   double lo[3], hi[3];
   for (int i = 0; i < 3; ++i) {
     lo[i] = HUGE_VAL;
@@ -78,10 +92,31 @@ void BoxTree::build(const std::vector<Box>& boxes) {
     keyed[k] = {code, k};
   }
   std::sort(keyed.begin(), keyed.end());
+  order_.resize(n);
   for (int k = 0; k < n; ++k) order_[k] = keyed[k].second;
-  nodes_.reserve(2 * (n / kLeafSize + 1));
-  build_range(0, n);
-#endif
+}
+
+// The partners of each queried box, found in Morton order, are appended in
+// the order of the box index: a sorted result, written once and in sequence.
+void BoxTree::place(const std::vector<QueryPart>& parts, std::vector<std::pair<int, int>>& out) const {
+  const int n = static_cast<int>(order_.size());
+  struct Where {
+    const int* partners = nullptr;
+    int count = 0;
+  };
+  std::vector<Where> where(static_cast<size_t>(n));
+  size_t total = 0;
+  for (const QueryPart& part : parts) {
+    const int* next = part.partners.data();
+    for (size_t g = 0; g < part.box.size(); ++g) {
+      where[part.box[g]] = {next, part.count[g]};
+      next += part.count[g];
+    }
+    total += part.partners.size();
+  }
+  out.reserve(total);
+  for (int i = 0; i < n; ++i)
+    for (int c = 0; c < where[i].count; ++c) out.emplace_back(i, where[i].partners[c]);
 }
 
 // A balanced tree over sorted positions: halves of the range (Morton order
@@ -92,18 +127,24 @@ int BoxTree::build_range(int lo, int hi) {
   nodes_[id].lo = lo;
   nodes_[id].hi = hi;
   Box box = (*boxes_)[order_[lo]];
+  int max_index = order_[lo];
   if (hi - lo <= kLeafSize) {
-    for (int p = lo + 1; p < hi; ++p) grow(box, (*boxes_)[order_[p]]);
+    for (int p = lo + 1; p < hi; ++p) {
+      grow(box, (*boxes_)[order_[p]]);
+      max_index = std::max(max_index, order_[p]);
+    }
   } else {
     const int mid = lo + (hi - lo) / 2;
     const int left = build_range(lo, mid);
     const int right = build_range(mid, hi);
     box = nodes_[left].box;
     grow(box, nodes_[right].box);
+    max_index = std::max(nodes_[left].max_index, nodes_[right].max_index);
     nodes_[id].left = left;
     nodes_[id].right = right;
   }
   nodes_[id].box = box;
+  nodes_[id].max_index = max_index;
   return id;
 }
 

@@ -1,12 +1,16 @@
-// Broad phase: all pairs of overlapping axis-aligned boxes. Two
-// implementations, both O(n log n) with no global box or cell size to choose:
+// Broad phase: all pairs of overlapping axis-aligned boxes. Two backends,
+// both O(n log n) with no global box or cell size to choose:
 //  - Boost.Geometry's R-tree (R* split, 16 entries per node) built by its
-//    packing constructor, one intersects query per box: used when the Boost
-//    headers are found at build time (B2B_HAVE_BOOST_GEOMETRY), because it
-//    measured faster (examples/c/model_scaling.cpp: 0.36 .. 0.93 of the time
-//    of the BVH below on the same boxes, the same pairs);
-//  - otherwise a bounding-volume hierarchy over the boxes sorted by the
-//    Morton code of their centres (taken in the boxes' own bounding box).
+//    packing constructor, one intersects query per box: the default when the
+//    Boost headers are found at build time (B2B_HAVE_BOOST_GEOMETRY), because
+//    it measured faster (examples/c/model_scaling.cpp compares the two on the
+//    same boxes);
+//  - a bounding-volume hierarchy over the boxes sorted by the Morton code of
+//    their centres (taken in the boxes' own bounding box): the fallback.
+// Either way the boxes are queried in Morton order, so consecutive queries
+// walk the same part of the tree (at 10^6 boxes, index order cost twice the
+// time per pair in cache misses), and each query's pairs are put in place
+// by the lower box index: the result comes out sorted without a global sort.
 #pragma once
 
 #include <cstdint>
@@ -29,10 +33,24 @@ struct Box {
 // L-infinity distance between two boxes (0 if they overlap).
 double box_distance(const Box& a, const Box& b);
 
+bool boxes_overlap(const Box& a, const Box& b);
+
 class BoxTree {
  public:
-  // Builds the hierarchy over boxes (kept by reference until the next build).
-  void build(const std::vector<Box>& boxes);
+  enum class Backend { kBvh, kRTree };
+  // The backend an update uses: the R-tree when it is built in.
+  static Backend default_backend() {
+#ifdef B2B_HAVE_BOOST_GEOMETRY
+    return Backend::kRTree;
+#else
+    return Backend::kBvh;
+#endif
+  }
+  static bool has_rtree() { return default_backend() == Backend::kRTree; }
+
+  // Builds the index over boxes (kept by reference until the next build).
+  // kRTree without the Boost headers builds the BVH.
+  void build(const std::vector<Box>& boxes, Backend backend = default_backend());
   // Every pair (i, j), i < j, of overlapping boxes for which accept(i, j)
   // is true, sorted. threads: as b2b's "threads" option (0: OpenMP's default).
   template <class Accept>
@@ -42,10 +60,16 @@ class BoxTree {
   struct Node {
     Box box;
     int lo, hi;          // the sorted boxes it covers: positions [lo, hi)
+    int max_index;       // the largest box index among them
     int left = -1, right = -1;
   };
+  // One chunk of queries: for each queried box, its partners j > i.
+  struct QueryPart {
+    std::vector<int> box, count, partners;
+  };
   const std::vector<Box>* boxes_ = nullptr;
-  std::vector<int> order_;  // box index at each sorted position
+  bool use_rtree_ = false;
+  std::vector<int> order_;  // box index at each Morton position
   std::vector<Node> nodes_;
 #ifdef B2B_HAVE_BOOST_GEOMETRY
   using BPoint = boost::geometry::model::point<double, 3, boost::geometry::cs::cartesian>;
@@ -56,46 +80,52 @@ class BoxTree {
     return BBox(BPoint(b.lo[0], b.lo[1], b.lo[2]), BPoint(b.hi[0], b.hi[1], b.hi[2]));
   }
 #endif
+  void sort_by_morton_code();
   int build_range(int lo, int hi);
-  // Pairs of the box at sorted position p with boxes at positions > p.
+  // Appends to out the boxes j > i that overlap box i and are accepted.
   template <class Accept>
-  void query(int p, Accept& accept, std::vector<std::pair<int, int>>& out) const;
+  void partners(int i, Accept& accept, std::vector<int>& out) const;
+  void place(const std::vector<QueryPart>& parts, std::vector<std::pair<int, int>>& out) const;
 };
 
-bool boxes_overlap(const Box& a, const Box& b);
-
 template <class Accept>
-void BoxTree::query(int p, Accept& accept, std::vector<std::pair<int, int>>& out) const {
-#ifdef B2B_HAVE_BOOST_GEOMETRY
-  // p is the box index itself; pairs with every later box that intersects it
-  std::vector<BValue> hits;
-  rtree_.query(boost::geometry::index::intersects(to_bbox((*boxes_)[p])),
-               std::back_inserter(hits));
-  for (const BValue& v : hits)
-    if (v.second > p && accept(p, v.second)) out.emplace_back(p, v.second);
-#else
-  if (nodes_.empty()) return;
-  const int i = order_[p];
+void BoxTree::partners(int i, Accept& accept, std::vector<int>& out) const {
   const Box& bi = (*boxes_)[i];
+#ifdef B2B_HAVE_BOOST_GEOMETRY
+  if (use_rtree_) {
+    struct Sink {  // an output iterator that keeps the accepted later boxes
+      int i;
+      Accept* accept;
+      std::vector<int>* out;
+      Sink& operator*() { return *this; }
+      Sink& operator++() { return *this; }
+      Sink& operator++(int) { return *this; }
+      Sink& operator=(const BValue& v) {
+        if (v.second > i && (*accept)(i, v.second)) out->push_back(v.second);
+        return *this;
+      }
+    };
+    rtree_.query(boost::geometry::index::intersects(to_bbox(bi)), Sink{i, &accept, &out});
+    return;
+  }
+#endif
+  if (nodes_.empty()) return;
   int stack[128];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (node.hi <= p + 1 || !boxes_overlap(node.box, bi)) continue;
+    if (node.max_index <= i || !boxes_overlap(node.box, bi)) continue;
     if (node.left < 0) {
-      for (int q = std::max(node.lo, p + 1); q < node.hi; ++q) {
+      for (int q = node.lo; q < node.hi; ++q) {
         const int j = order_[q];
-        if (!boxes_overlap((*boxes_)[j], bi)) continue;
-        const int a = i < j ? i : j, b = i < j ? j : i;
-        if (accept(a, b)) out.emplace_back(a, b);
+        if (j > i && boxes_overlap((*boxes_)[j], bi) && accept(i, j)) out.push_back(j);
       }
     } else {
       stack[top++] = node.left;
       stack[top++] = node.right;
     }
   }
-#endif
 }
 
 }  // namespace model

@@ -1,6 +1,6 @@
-// BoxTree::overlapping_pairs: the parallel self-join over the hierarchy.
-// Fixed chunks of sorted positions, each with its own output, concatenated in
-// chunk order and sorted: the result does not depend on the thread count.
+// BoxTree::overlapping_pairs: the parallel self-join. Fixed chunks of Morton
+// positions, each with its own output, then every query's partners put in
+// place by box index: the result does not depend on the thread count.
 #pragma once
 
 #include <algorithm>
@@ -19,7 +19,7 @@ void BoxTree::overlapping_pairs(Accept accept, int threads,
   const int n = static_cast<int>(order_.size());
   constexpr int kChunk = 4096;
   const int n_chunks = (n + kChunk - 1) / kChunk;
-  std::vector<std::vector<std::pair<int, int>>> parts(n_chunks);
+  std::vector<QueryPart> parts(n_chunks);
 #ifdef B2B_HAVE_OPENMP
   const int nt = threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nt) if (n_chunks > 1)
@@ -28,14 +28,19 @@ void BoxTree::overlapping_pairs(Accept accept, int threads,
 #endif
   for (int c = 0; c < n_chunks; ++c) {
     Accept local = accept;
+    QueryPart& part = parts[c];
     const int end = std::min(n, (c + 1) * kChunk);
-    for (int p = c * kChunk; p < end; ++p) query(p, local, parts[c]);
+    for (int q = c * kChunk; q < end; ++q) {
+      const int i = order_[q];
+      const size_t start = part.partners.size();
+      partners(i, local, part.partners);
+      if (part.partners.size() == start) continue;
+      std::sort(part.partners.begin() + static_cast<std::ptrdiff_t>(start), part.partners.end());
+      part.box.push_back(i);
+      part.count.push_back(static_cast<int>(part.partners.size() - start));
+    }
   }
-  size_t total = 0;
-  for (const auto& part : parts) total += part.size();
-  out.reserve(total);
-  for (const auto& part : parts) out.insert(out.end(), part.begin(), part.end());
-  std::sort(out.begin(), out.end());
+  place(parts, out);
 }
 
 }  // namespace model
