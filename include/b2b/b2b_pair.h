@@ -96,9 +96,11 @@
  *   OUTSIDE        the closest point is not this pair's: it lies on a
  *                  neighbouring segment (xi or eta outside [-1, 1), see
  *                  ownership) or beyond a beam end; no force
- *   PARALLEL       crossing angle below "parallel_angle" or a singular
- *                  closest-point problem: point-wise contact is not defined;
- *                  no force
+ *   PARALLEL       crossing angle below "parallel_angle", a singular
+ *                  closest-point problem, or a cusp (a centreline whose
+ *                  tangent vanishes at the closest point, e.g. a host end
+ *                  tangent opposite to the chord): point-wise contact is not
+ *                  defined; no force
  *   NOT_CONVERGED  the closest-point search did not converge; no force
  *   NO_NORMAL      the axes intersect exactly and there is no previous
  *                  normal in the history; no force

@@ -132,6 +132,9 @@ Failure Segment::build(int kind, int start_rule, int end_rule, const double* X,
     if (first && last) return reject(B2B_ERR_RANGE, -1, -1);
     if (!first && coincident(X, 0, 1)) return reject(B2B_ERR_COINCIDENT, 0, 1);
     if (!last && coincident(X, 1, 2)) return reject(B2B_ERR_COINCIDENT, 1, 2);
+    // x1 = x3: the parabola from m12 to m23 = m12 turns back at x2 (a hairpin
+    // whose tangent vanishes at its apex); l13 = 0 is FOLDED (b2b_curve.h).
+    if (!first && !last && coincident(X, 0, 2)) return reject(B2B_ERR_FOLDED, 0, 2);
     if (first) {  // half element from x2 to the midpoint of x2-x3
       set_linear(0, 0, 1, 0, 0, X);
       if (start_rule == B2B_END_TANGENT)
@@ -167,24 +170,34 @@ Failure Segment::build(int kind, int start_rule, int end_rule, const double* X,
 }
 
 void Segment::point(double xi, double* x, double* xd, double* xdd) const {
+  static const double zero[3] = {0.0, 0.0, 0.0};
+  point_from(zero, xi, x, xd, xdd);
+}
+
+void Segment::point_from(const double* origin, double xi, double* x, double* xd,
+                         double* xdd) const {
+  const double* x2 = term_[0].value;
+  const double* x3 = term_[2].value;
   if (linear_kind_) {  // the chord: no Hermite weights to pay for
-    const double* x2 = term_[0].value;
-    const double* x3 = term_[2].value;
     for (int i = 0; i < 3; ++i) {
-      if (x) x[i] = 0.5 * (1.0 - xi) * x2[i] + 0.5 * (1.0 + xi) * x3[i];
+      if (x) x[i] = 0.5 * (1.0 - xi) * (x2[i] - origin[i]) + 0.5 * (1.0 + xi) * (x3[i] - origin[i]);
       if (xd) xd[i] = 0.5 * (x3[i] - x2[i]);
       if (xdd) xdd[i] = 0.0;
     }
     return;
   }
+  // The position weights h[0] + h[2] sum to 1 (and their derivatives to 0),
+  // so the origin comes off the end points alone; the derivatives, too, are
+  // formed from the offsets, not from two large positions that cancel.
   const HermiteBasis hb(xi);
   for (int i = 0; i < 3; ++i) {
+    const double tv[4] = {x2[i] - origin[i], term_[1].value[i], x3[i] - origin[i],
+                          term_[3].value[i]};
     double v = 0, vd = 0, vdd = 0;
     for (int k = 0; k < 4; ++k) {
-      const double tv = term_[k].value[i];
-      v += hb.h[k] * tv;
-      vd += hb.dh[k] * tv;
-      vdd += hb.ddh[k] * tv;
+      v += hb.h[k] * tv[k];
+      vd += hb.dh[k] * tv[k];
+      vdd += hb.ddh[k] * tv[k];
     }
     if (x) x[i] = v;
     if (xd) xd[i] = vd;

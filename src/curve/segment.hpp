@@ -39,6 +39,11 @@ class Segment {
 
   // x(xi), dx/dxi, d2x/dxi2 (any pointer may be null).
   void point(double xi, double* x, double* xd, double* xdd) const;
+  // x(xi) - origin, formed from the end points' offsets to origin: when the
+  // segments lie far from the coordinates' origin, differences of two such
+  // points keep the accuracy of the inputs (about eps times the patch size,
+  // not eps times the coordinates). dx/dxi, d2x/dxi2 as point().
+  void point_from(const double* origin, double xi, double* x, double* xd, double* xdd) const;
   // P = dx/dX and Pd = d(dx/dxi)/dX, 3x12 column-major each.
   void jacobians(double xi, double* P, double* Pd) const;
   // Hx = w . d2x/dX2 and Hxd = w . d2(dx/dxi)/dX2, 12x12 column-major each,

@@ -15,6 +15,10 @@ using curve::norm3;
 constexpr double kBox = 3.0;       // iterates stay in [-3, 3]: the cubics extend, but not forever
 constexpr double kMaxStep = 1.0;   // at most half a segment per iteration
 constexpr double kArmijo = 1e-4;
+constexpr double kRelTol = 1e-13;  // tangential residual relative to the axis distance
+// A Newton step this small (in the parameters, which run over [-1, 1]) is
+// rounding: 16 ulps of 1.
+constexpr double kStepAtRounding = 16.0 * DBL_EPSILON;
 
 // NaN goes to the middle of the range rather than through.
 double clamp(double v, double lo, double hi) {
@@ -26,8 +30,9 @@ double clamp(double v, double lo, double hi) {
 double half_distance_squared(const curve::Segment& A, const curve::Segment& B, double xi,
                              double eta, double inv_scale) {
   double xa[3], xb[3], d[3];
-  A.point(xi, xa, nullptr, nullptr);
-  B.point(eta, xb, nullptr, nullptr);
+  const double* origin = A.start_point();
+  A.point_from(origin, xi, xa, nullptr, nullptr);
+  B.point_from(origin, eta, xb, nullptr, nullptr);
   for (int i = 0; i < 3; ++i) d[i] = (xa[i] - xb[i]) * inv_scale;
   return 0.5 * dot3(d, d);
 }
@@ -66,11 +71,15 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
                              double eta, int max_iterations, double tol_length, double scale) {
   ClosestPoints r;
   const double inv_scale = 1.0 / scale;
+  bool newton_at_rounding = false;
   int pinned = 0;  // consecutive iterations held at the box by a step that points out of it
+  // Points relative to A's start: d keeps the inputs' accuracy far from the
+  // coordinates' origin (see Segment::point_from).
+  const double* origin = A.start_point();
   for (int it = 0;; ++it) {
     double xa[3], xad[3], xadd[3], xb[3], xbd[3], xbdd[3], d[3];
-    A.point(xi, xa, xad, xadd);
-    B.point(eta, xb, xbd, xbdd);
+    A.point_from(origin, xi, xa, xad, xadd);
+    B.point_from(origin, eta, xb, xbd, xbdd);
     // Everything below in units of scale (phi, its gradient and Hessian are
     // then O(1) whatever the size of the segments).
     for (int i = 0; i < 3; ++i) d[i] = (xa[i] - xb[i]) * inv_scale;
@@ -81,8 +90,21 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
     // Gradient of phi; in length units after dividing by the speeds.
     const double g1 = dot3(d, xad), g2 = -dot3(d, xbd);
     const double na = norm3(xad), nb = norm3(xbd);
-    const double tol = tol_length * inv_scale + 64.0 * DBL_EPSILON * norm3(d);
+    // The tangential residual, relative to the axis distance rho = |d| as
+    // well as to the segments: the normal d / rho tilts by about |g| / rho,
+    // so near-intersecting axes need a residual that shrinks with rho (the
+    // step test below stops the iteration where rounding takes over).
+    const double rho = norm3(d);
+    const double tol = std::fmin(tol_length * inv_scale, kRelTol * rho) + 4.0 * DBL_EPSILON * rho;
     if (std::fabs(g1) <= tol * na && std::fabs(g2) <= tol * nb) {
+      r.converged = true;
+      r.iterations = it;
+      break;
+    }
+    if (it > 0 && newton_at_rounding) {
+      // The last step was a plain Newton step (no shift, no line search)
+      // of a few ulps of the parameters: the gradient is rounding noise,
+      // the iterate as good as the inputs allow.
       r.converged = true;
       r.iterations = it;
       break;
@@ -101,7 +123,8 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
     const double radius = std::sqrt(0.25 * (h11 - h22) * (h11 - h22) + h12 * h12);
     const double lambda_min = mean - radius;
     const double floor = 1e-6 * hscale;
-    if (lambda_min < floor) {
+    const bool shifted = lambda_min < floor;
+    if (shifted) {
       h11 += floor - lambda_min;
       h22 += floor - lambda_min;
     }
@@ -128,6 +151,7 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
         alpha *= 0.5;
       }
     }
+    newton_at_rounding = !shifted && alpha == 1.0 && m <= kStepAtRounding;
     const double xi_free = xi + alpha * s1, eta_free = eta + alpha * s2;
     xi = clamp(xi_free, -kBox, kBox);
     eta = clamp(eta_free, -kBox, kBox);

@@ -44,9 +44,16 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
   const double len_a = norm3(t);
   sub3(b1, b0, t);
   const double len_b = norm3(t);
-  const double coord = std::fmax(std::fmax(max_abs3(a0), max_abs3(a1)),
-                                 std::fmax(max_abs3(b0), max_abs3(b1)));
-  const double tol_length = 1e-13 * (len_a + len_b) + 64.0 * DBL_EPSILON * coord;
+  // The algebra works relative to A's start point (Segment::point_from), so
+  // rounding scales with the patch's extent, not with the coordinates.
+  double rel[3];
+  sub3(b0, a0, rel);
+  double extent = max_abs3(rel);
+  sub3(b1, a0, rel);
+  extent = std::fmax(extent, max_abs3(rel));
+  sub3(a1, a0, rel);
+  extent = std::fmax(extent, max_abs3(rel));
+  const double tol_length = 1e-13 * (len_a + len_b) + 64.0 * DBL_EPSILON * extent;
   // The length unit of the closest-point algebra below: products of four
   // lengths (the Hessian's determinant) stay in range for any coordinates.
   const double unit = len_a + len_b;
@@ -76,9 +83,15 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     const bool ran_off = std::fabs(cp.xi) > 1.0 || std::fabs(cp.eta) > 1.0;
     return ran_off ? B2B_CONTACT_OUTSIDE : B2B_CONTACT_NOT_CONVERGED;
   }
+  // Positions (reported) from the coordinates; d and the derivatives from
+  // the offsets to A's start (Segment::point_from), accurate far from the
+  // coordinates' origin.
   PointState &pa = k.pa, &pb = k.pb;
-  sa.point(k.xi, pa.x, pa.xd, pa.xdd);
-  sb.point(k.eta, pb.x, pb.xd, pb.xdd);
+  double ra[3], rb[3];
+  sa.point_from(a0, k.xi, ra, pa.xd, pa.xdd);
+  sb.point_from(a0, k.eta, rb, pb.xd, pb.xdd);
+  sa.point(k.xi, pa.x, nullptr, nullptr);
+  sb.point(k.eta, pb.x, nullptr, nullptr);
   for (int i = 0; i < 3; ++i) {
     info[B2B_INFO_POINT_A + i] = pa.x[i];
     info[B2B_INFO_POINT_B + i] = pb.x[i];
@@ -92,10 +105,16 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     tb[i] = pb.xd[i] * inv_unit;
     tad[i] = pa.xdd[i] * inv_unit;
     tbd[i] = pb.xdd[i] * inv_unit;
-    k.d[i] = pa.x[i] - pb.x[i];
+    k.d[i] = ra[i] - rb[i];
     du[i] = k.d[i] * inv_unit;
   }
   const double na = norm3(ta), nb = norm3(tb);
+  if (!(na > 0.0 && nb > 0.0)) {
+    // A cusp: the centreline stops and turns back at the closest point, so
+    // there is neither a crossing angle nor a unique normal (b2b_pair.h).
+    info[B2B_INFO_ANGLE] = 0.0;
+    return B2B_CONTACT_PARALLEL;
+  }
   double cr[3];
   cross3(ta, tb, cr);
   const double sin_angle = norm3(cr) / (na * nb);

@@ -26,9 +26,10 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   fr.committed_e2 = hist_old[kHistForceE2];
   fr.xi_n = hist_old[kHistXi];
   fr.eta_n = hist_old[kHistEta];
-  double xa[3], xb[3];
-  c.sa->point(fr.xi_n, xa, nullptr, nullptr);
-  c.sb->point(fr.eta_n, xb, nullptr, nullptr);
+  double xa[3], xb[3];  // relative to A's start: accurate far from the origin
+  const double* origin = c.sa->start_point();
+  c.sa->point_from(origin, fr.xi_n, xa, nullptr, nullptr);
+  c.sb->point_from(origin, fr.eta_n, xb, nullptr, nullptr);
   for (int i = 0; i < 3; ++i) fr.anchor_gap[i] = xa[i] - xb[i];
   // g_T = (I - n n^T)(x_A(xi_n) - x_B(eta_n)); T_trial = T_n + eps_T g_T
   const double nd = dot3(c.n, fr.anchor_gap);

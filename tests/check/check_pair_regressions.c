@@ -4,7 +4,13 @@
  *    with B2B_OK (0 * inf, g0^2 overflowing), or an overflow error where the
  *    true force and energy are finite;
  *  - the handover writing -Inf for a history whose xi was -1e308 (which the
- *    history check let through). */
+ *    history check let through);
+ *  - a pair far from the coordinates' origin (offset 1e8, unit elements):
+ *    the search stopped on a tolerance of 64 eps |coordinate| and residual
+ *    and tangent were off by 3e-6 relative (nodal and weighted kinds);
+ *  - near-intersecting axes: a normal tilted by 6e-14 L / rho;
+ *  - a midpoint hairpin (x1 = x3) and a nodal cusp: NaN with B2B_OK. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -117,6 +123,186 @@ START_TEST(handover_of_an_absurd_parameter_is_refused) {
 }
 END_TEST
 
+/* The same crossing at the origin and translated by about 1e8 (coordinates on
+ * a grid of 2^-20, so the translation is exact): the results of a translated
+ * pair must be those of the original up to rounding of the patch's size, for
+ * every kind, frictionless and in a second, sliding step with friction. */
+START_TEST(far_from_the_origin_as_at_the_origin) {
+  const double offset[3] = {1e8, -1e8, 0.5e8};
+  tst_rng rng;
+  tst_rng_seed(&rng, 4242);
+  double worst_r = 0.0, worst_k = 0.0;
+  for (int ka = 0; ka < 4; ++ka)
+    for (int kb = 0; kb < 4; ++kb) {
+      tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+      double X[24], Y[24], X2[24], Y2[24];
+      tst_crossing(&rng, &spec, 0.5, tst_uniform(&rng, 20, 90), tst_uniform(&rng, -0.6, 0.6),
+                   tst_uniform(&rng, -0.6, 0.6), 0.3, X);
+      for (int i = 0; i < 24; ++i) {
+        X[i] = ldexp(nearbyint(ldexp(X[i], 20)), -20); /* NaN (unused slots) stays NaN */
+        X2[i] = X[i] + (i % 3 == 1 ? 0.015625 : 0.0);  /* the second step slides along y */
+        Y[i] = X[i] + offset[i % 3];
+        Y2[i] = X2[i] + offset[i % 3];
+      }
+      for (int fric = 0; fric < 2; ++fric) {
+        b2b_params *p = fric ? tst_params_friction(B2B_LAW_LINEAR, 1e3, 0.0, 0.3, 1e3)
+                             : tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+        const int n_hist = tst_history_len(p);
+        double h0[64] = {0}, hx[64], hy[64], hx2[64], hy2[64];
+        double ix[32], iy[32], rx[24], ry[24], Kx[576], Ky[576];
+        ck_assert(n_hist <= 64);
+        int sx = tst_pair(p, &spec, X, h0, hx, ix, rx, Kx);
+        int sy = tst_pair(p, &spec, Y, h0, hy, iy, ry, Ky);
+        if (fric) { /* the second step, from each one's own committed history */
+          sx = tst_pair(p, &spec, X2, hx, hx2, ix, rx, Kx);
+          sy = tst_pair(p, &spec, Y2, hy, hy2, iy, ry, Ky);
+        }
+        ck_assert_msg(sx == B2B_CONTACT_ACTIVE && sy == B2B_CONTACT_ACTIVE,
+                      "%s x %s, friction %d: status %d at the origin (%g iterations), %d far "
+                      "from it (%g iterations, xi %.17g, eta %.17g)",
+                      tst_kind_name(spec.kind[0]), tst_kind_name(spec.kind[1]), fric, sx,
+                      ix[B2B_INFO_ITERATIONS], sy, iy[B2B_INFO_ITERATIONS], iy[B2B_INFO_XI],
+                      iy[B2B_INFO_ETA]);
+        double rmax = 0.0, kmax = 0.0, dr = 0.0, dk = 0.0;
+        for (int i = 0; i < 24; ++i) {
+          rmax = fmax(rmax, fabs(rx[i]));
+          dr = fmax(dr, fabs(rx[i] - ry[i]));
+        }
+        for (int i = 0; i < 576; ++i) {
+          kmax = fmax(kmax, fabs(Kx[i]));
+          dk = fmax(dk, fabs(Kx[i] - Ky[i]));
+        }
+        worst_r = fmax(worst_r, dr / rmax);
+        worst_k = fmax(worst_k, dk / kmax);
+        /* 1e-10: far below the 3e-6 of the defect, far above rounding of
+         * the patch (the gap's own rounding is about 1e-15 / 0.05) */
+        ck_assert_msg(dr <= 1e-10 * rmax && dk <= 1e-10 * kmax,
+                      "%s x %s, friction %d: residual %.2e, tangent %.2e relative",
+                      tst_kind_name(spec.kind[0]), tst_kind_name(spec.kind[1]), fric, dr / rmax,
+                      dk / kmax);
+        b2b_params_destroy(&p);
+      }
+    }
+  printf("far from the origin (offset 1e8): worst difference to the origin's results: "
+         "residual %.2e, tangent %.2e relative\n", worst_r, worst_k);
+}
+END_TEST
+
+/* Near-intersecting axes: the search stopped on a tangential residual of
+ * about 1e-13 L whatever the axis distance rho, so the normal d / rho tilted
+ * by about 6e-14 L / rho (0.12 rad at rho = 1e-12 L). Now the residual is
+ * relative to rho too: the normal's error must stay at the conditioning of
+ * the inputs, a few eps L / rho, against the crossing's construction (which
+ * is itself rounded: its own normal is good to about 2 eps L / rho). */
+START_TEST(normal_accurate_as_the_axes_meet) {
+  tst_rng rng;
+  tst_rng_seed(&rng, 777);
+  double worst = 0.0; /* tilt * rho / eps */
+  for (int ka = 0; ka < 4; ++ka)
+    for (int kb = 0; kb < 4; ++kb)
+      for (int e = 4; e <= 10; ++e)
+        for (int rep = 0; rep < 3; ++rep) {
+          const double rho = pow(10.0, -e);
+          tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+          const double xs = tst_uniform(&rng, -0.6, 0.6), es = tst_uniform(&rng, -0.6, 0.6);
+          double X[24];
+          tst_crossing(&rng, &spec, 0.5, tst_uniform(&rng, 20, 90), xs, es, rho, X);
+          double xa[9], xb[9];
+          tst_eval(spec.kind[0], 0, 0, X, NULL, xs, xa, NULL, NULL);
+          tst_eval(spec.kind[1], 0, 0, X + 12, NULL, es, xb, NULL, NULL);
+          double n[3], len = 0.0;
+          for (int i = 0; i < 3; ++i) {
+            n[i] = xa[i] - xb[i];
+            len += n[i] * n[i];
+          }
+          len = sqrt(len);
+          b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+          double info[32], r[24];
+          const int st = tst_pair(p, &spec, X, NULL, NULL, info, r, NULL);
+          ck_assert_msg(st == B2B_CONTACT_ACTIVE, "status %d", st);
+          double c[3];
+          const double *m = info + B2B_INFO_NORMAL;
+          c[0] = m[1] * n[2] - m[2] * n[1];
+          c[1] = m[2] * n[0] - m[0] * n[2];
+          c[2] = m[0] * n[1] - m[1] * n[0];
+          const double tilt = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len;
+          worst = fmax(worst, tilt * rho / DBL_EPSILON);
+          b2b_params_destroy(&p);
+        }
+  printf("near-intersecting axes (rho = 1e-4 .. 1e-10 L, all kinds): normal tilt at most "
+         "%.1f eps L / rho\n", worst);
+  ck_assert_msg(worst <= 32.0, "normal tilt %.1f eps L / rho", worst);
+}
+END_TEST
+
+/* A hairpin: a hermite-midpoint segment with x1 = x3 turns back at x2 (its
+ * tangent vanishes at the apex). It returned OK with a NaN angle; the header
+ * promises FOLDED, with the outputs untouched. */
+START_TEST(midpoint_hairpin_is_folded) {
+  const int seg[6] = {B2B_CURVE_LINEAR, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR,
+                      B2B_CURVE_HERMITE_MIDPOINT, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR};
+  const double X[24] = {0, 0, 0, 0.5, -1, 0, 0.5, 1, 0, 0, 0, 0,
+                        0, 0, 0, 1, 0, 0, 0, 0, 0, 5, 5, 5};
+  const double radii[2] = {0.1, 0.1};
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  double h0[8] = {0}, h1[8], info[32], r[24];
+  for (int i = 0; i < 32; ++i) info[i] = -7.0;
+  for (int i = 0; i < 24; ++i) r[i] = -7.0;
+  char msg[B2B_ERRMSG_LEN] = "";
+  int st = -1;
+  const int rc = b2b_pair_eval(p, seg, X, NULL, radii, h0, h1, 8, &st, info, r, NULL, 24, msg,
+                               sizeof msg);
+  ck_assert_msg(rc == B2B_ERR_FOLDED, "returned %d: %s", rc, msg);
+  ck_assert_msg(strstr(msg, "x1 and x3") != NULL, "%s", msg);
+  ck_assert_int_eq(st, -1);
+  for (int i = 0; i < 32; ++i) ck_assert(info[i] == -7.0);
+  for (int i = 0; i < 24; ++i) ck_assert(r[i] == -7.0);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
+/* A cusp: a nodal segment whose host end tangent points against its chord
+ * stops and turns back inside (x' = 0 at xi = (1 - sqrt(10)) / 3). A beam
+ * crossing it anywhere near the cusp, at scales 1 and 1e-9, gets B2B_OK with
+ * finite outputs (PARALLEL where the closest point is the cusp itself). */
+START_TEST(cusp_gives_finite_outputs) {
+  const int seg[6] = {B2B_CURVE_LINEAR, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR,
+                      B2B_CURVE_HERMITE_NODAL, B2B_END_TANGENT, B2B_END_REFLECT};
+  const double tangents[12] = {1, 0, 0, 1, 0, 0, -1, 0, 0, 1, 0, 0};
+  const double xi_c = (1.0 - sqrt(10.0)) / 3.0;
+  const double h = 0.25 * (1.0 - xi_c - xi_c * xi_c + xi_c * xi_c * xi_c) * -0.5 +
+                   0.25 * (2.0 + 3.0 * xi_c - xi_c * xi_c * xi_c) +
+                   0.25 * (-1.0 - xi_c + xi_c * xi_c + xi_c * xi_c * xi_c) * 0.5;
+  int parallel = 0, evaluated = 0;
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  for (int sc = 0; sc < 2; ++sc) {
+    const double L = sc ? 1e-9 : 1.0;
+    for (int k = -20; k <= 20; ++k) {
+      const double xa = (h + 1e-3 * k) * L; /* h: x at the cusp, for chord (0,0,0)-(1,0,0) */
+      for (int lift = 0; lift < 2; ++lift) {
+        const double z = lift ? 0.15 * L : 0.0;
+        const double X[24] = {0, 0, 0, xa, -L, z, xa, L, z, 0, 0, 0,
+                              0, 0, 0, 0, 0, 0, L, 0, 0, 0, 0, 0};
+        const double radii[2] = {0.1 * L, 0.1 * L};
+        double h0[8] = {0}, h1[8], info[32], r[24], K[576];
+        char msg[B2B_ERRMSG_LEN] = "";
+        int st = -1;
+        const int rc = b2b_pair_eval(p, seg, X, tangents, radii, h0, h1, 8, &st, info, r, K, 24,
+                                     msg, sizeof msg);
+        ck_assert_msg(rc == B2B_OK, "scale %g, x %g: returned %d: %s", L, xa, rc, msg);
+        ck_assert_msg(all_finite(info, 32) && all_finite(r, 24) && all_finite(K, 576),
+                      "scale %g, x %g: status %d with a non-finite output", L, xa, st);
+        parallel += st == B2B_CONTACT_PARALLEL;
+        ++evaluated;
+      }
+    }
+  }
+  printf("cusp: %d crossings near it at scales 1 and 1e-9, all finite (%d PARALLEL)\n", evaluated,
+         parallel);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("pair_regressions");
   TCase *tc = tcase_create("regressions");
@@ -124,6 +310,10 @@ int main(void) {
   tcase_add_test(tc, force_beyond_doubles_is_an_error);
   tcase_add_test(tc, finite_force_with_huge_gap_is_computed);
   tcase_add_test(tc, handover_of_an_absurd_parameter_is_refused);
+  tcase_add_test(tc, far_from_the_origin_as_at_the_origin);
+  tcase_add_test(tc, normal_accurate_as_the_axes_meet);
+  tcase_add_test(tc, midpoint_hairpin_is_folded);
+  tcase_add_test(tc, cusp_gives_finite_outputs);
   suite_add_tcase(s, tc);
   return tst_run_suite(s);
 }
