@@ -90,23 +90,21 @@ static void fill_outputs(outputs *o) {
 }
 
 static void assert_untouched(const outputs *o, const char *ctx) {
-  for (int i = 0; i < 9; ++i)
-    ck_assert_msg(o->x[i] == SENT, "%s: x[%d] was written (%g) on failure", ctx, i, o->x[i]);
-  for (int i = 0; i < 72; ++i)
-    ck_assert_msg(o->dx[i] == SENT, "%s: dx[%d] was written (%g) on failure", ctx, i, o->dx[i]);
-  for (int i = 0; i < 864; ++i)
-    ck_assert_msg(o->d2x[i] == SENT, "%s: d2x[%d] was written (%g) on failure", ctx, i,
-                  o->d2x[i]);
+  TST_ASSERT_ALL(int, i, 0, 9, o->x[i] == SENT,
+                 "%s: x[%d] was written (%g) on failure", ctx, i, o->x[i]);
+  TST_ASSERT_ALL(int, i, 0, 72, o->dx[i] == SENT,
+                 "%s: dx[%d] was written (%g) on failure", ctx, i, o->dx[i]);
+  TST_ASSERT_ALL(int, i, 0, 864, o->d2x[i] == SENT,
+                 "%s: d2x[%d] was written (%g) on failure", ctx, i, o->d2x[i]);
 }
 
 static void assert_finite(const outputs *o, const char *ctx) {
-  for (int i = 0; i < 9; ++i)
-    ck_assert_msg(isfinite(o->x[i]) && o->x[i] != SENT, "%s: x[%d] = %g", ctx, i, o->x[i]);
-  for (int i = 0; i < 72; ++i)
-    ck_assert_msg(isfinite(o->dx[i]) && o->dx[i] != SENT, "%s: dx[%d] = %g", ctx, i, o->dx[i]);
-  for (int i = 0; i < 864; ++i)
-    ck_assert_msg(isfinite(o->d2x[i]) && o->d2x[i] != SENT, "%s: d2x[%d] = %g", ctx, i,
-                  o->d2x[i]);
+  TST_ASSERT_ALL(int, i, 0, 9, isfinite(o->x[i]) && o->x[i] != SENT,
+                 "%s: x[%d] = %g", ctx, i, o->x[i]);
+  TST_ASSERT_ALL(int, i, 0, 72, isfinite(o->dx[i]) && o->dx[i] != SENT,
+                 "%s: dx[%d] = %g", ctx, i, o->dx[i]);
+  TST_ASSERT_ALL(int, i, 0, 864, isfinite(o->d2x[i]) && o->d2x[i] != SENT,
+                 "%s: d2x[%d] = %g", ctx, i, o->d2x[i]);
 }
 
 static int outputs_equal(const outputs *a, const outputs *b) {
@@ -129,8 +127,8 @@ static void expect_fail(const char *ctx, int kind, int sr, int er, const double 
                 b2b_strerror(st), want, b2b_strerror(want), B2B_ERRMSG_LEN, msg);
   ck_assert_msg(memchr(msg, '\0', B2B_ERRMSG_LEN) != NULL, "%s: message not NUL-terminated",
                 ctx);
-  for (size_t i = B2B_ERRMSG_LEN; i < sizeof msg; ++i)
-    ck_assert_msg(msg[i] == GUARD, "%s: message buffer overrun at byte %zu", ctx, i);
+  TST_ASSERT_ALL(size_t, i, B2B_ERRMSG_LEN, sizeof msg, msg[i] == GUARD,
+                 "%s: message buffer overrun at byte %zu", ctx, i);
   ck_assert_msg(msg[0] != '\0', "%s: empty message", ctx);
   const char *w[3] = {w1, w2, w3};
   for (int k = 0; k < 3; ++k)
@@ -160,8 +158,8 @@ static void expect_ok(const char *ctx, int kind, int sr, int er, const double *p
       b2b_segment_eval(kind, sr, er, patch, tang, xi, o->x, o->dx, o->d2x, msg, (int)sizeof msg);
   ck_assert_msg(st == B2B_OK, "%s: status %d (%s): %.*s", ctx, st, b2b_strerror(st),
                 (int)sizeof msg, msg);
-  for (size_t i = 0; i < sizeof msg; ++i)
-    ck_assert_msg(msg[i] == GUARD, "%s: a successful call wrote errmsg[%zu]", ctx, i);
+  TST_ASSERT_ALL(size_t, i, 0, sizeof msg, msg[i] == GUARD,
+                 "%s: a successful call wrote errmsg[%zu]", ctx, i);
   assert_finite(o, ctx);
 }
 
@@ -946,9 +944,8 @@ START_TEST(test_errmsg_null) {
     memset(msg, GUARD, sizeof msg);
     ck_assert_msg(run_bad_call(c, &o, msg, len) == c->want, "%s: wrong code with errmsg_len %d",
                   c->what, len);
-    for (size_t i = 0; i < sizeof msg; ++i)
-      ck_assert_msg(msg[i] == GUARD, "%s: errmsg_len %d but errmsg[%zu] written", c->what, len,
-                    i);
+    TST_ASSERT_ALL(size_t, i, 0, sizeof msg, msg[i] == GUARD,
+                   "%s: errmsg_len %d but errmsg[%zu] written", c->what, len, i);
     assert_untouched(&o, c->what);
   }
 }
@@ -972,8 +969,8 @@ START_TEST(test_errmsg_truncated) {
     ck_assert_int_eq(run_bad_call(c, &o, buf, len), c->want);
     ck_assert_msg(memchr(buf, '\0', (size_t)len) != NULL,
                   "%s: errmsg_len %d, no NUL within the buffer", c->what, len);
-    for (size_t i = (size_t)len; i < sizeof buf; ++i)
-      ck_assert_msg(buf[i] == GUARD, "%s: errmsg_len %d, byte %zu written", c->what, len, i);
+    TST_ASSERT_ALL(size_t, i, (size_t)len, sizeof buf, buf[i] == GUARD,
+                   "%s: errmsg_len %d, byte %zu written", c->what, len, i);
     const size_t want = strlen(full) < (size_t)len - 1 ? strlen(full) : (size_t)len - 1;
     ck_assert_msg(strlen(buf) == want && strncmp(buf, full, want) == 0,
                   "%s: errmsg_len %d gave \"%s\", not the first %zu characters of \"%s\"",
@@ -995,9 +992,8 @@ START_TEST(test_errmsg_distinct) {
     ck_assert_msg(strlen(big) < B2B_ERRMSG_LEN - 1, "%s: message longer than B2B_ERRMSG_LEN",
                   bad_calls[k].what);
     memcpy(msgs[k], big, B2B_ERRMSG_LEN);
-    for (int j = 0; j < k; ++j)
-      ck_assert_msg(strcmp(msgs[j], msgs[k]) != 0, "\"%s\" and \"%s\" give the same message",
-                    bad_calls[j].what, bad_calls[k].what);
+    TST_ASSERT_ALL(int, j, 0, k, strcmp(msgs[j], msgs[k]) != 0,
+                   "\"%s\" and \"%s\" give the same message", bad_calls[j].what, bad_calls[k].what);
   }
 }
 END_TEST
@@ -1019,9 +1015,8 @@ START_TEST(test_success_leaves_errmsg) {
         const int st = b2b_segment_eval(kind, sr, er, p, good_tangents, XI0, o.x, o.dx, o.d2x,
                                         msg, lens[k]);
         ck_assert_int_eq(st, B2B_OK);
-        for (size_t i = 0; i < sizeof msg; ++i)
-          ck_assert_msg(msg[i] == GUARD, "%s (%s, %s), errmsg_len %d: errmsg[%zu] written",
-                        tst_kind_name(kind), rule_name(sr), rule_name(er), lens[k], i);
+        TST_ASSERT_ALL(size_t, i, 0, sizeof msg, msg[i] == GUARD,
+                       "%s (%s, %s), errmsg_len %d: errmsg[%zu] written", tst_kind_name(kind), rule_name(sr), rule_name(er), lens[k], i);
         assert_finite(&o, tst_kind_name(kind));
       }
     }
@@ -1071,8 +1066,8 @@ static void expect_patch_fail(const char *ctx, int kind, int n, int closed, int 
   for (size_t i = B2B_ERRMSG_LEN; i < sizeof msg; ++i) ck_assert(msg[i] == GUARD);
   if (w1) ck_assert_msg(strstr(msg, w1) != NULL, "%s: \"%s\" lacks \"%s\"", ctx, msg, w1);
   if (w2) ck_assert_msg(strstr(msg, w2) != NULL, "%s: \"%s\" lacks \"%s\"", ctx, msg, w2);
-  for (int k = 0; k < 4; ++k)
-    ck_assert_msg(nodes[k] == SENT_INT, "%s: nodes[%d] written (%d) on failure", ctx, k, nodes[k]);
+  TST_ASSERT_ALL(int, k, 0, 4, nodes[k] == SENT_INT,
+                 "%s: nodes[%d] written (%d) on failure", ctx, k, nodes[k]);
   ck_assert_msg(sr == SENT_INT && er == SENT_INT, "%s: rules written on failure", ctx);
   st = b2b_beam_segment_patch(kind, n, closed, seg, (null_mask & 1) ? NULL : nodes,
                               (null_mask & 2) ? NULL : &sr, (null_mask & 4) ? NULL : &er, NULL, 0);

@@ -205,20 +205,16 @@ static int run_call(pair_call *c, outputs *o, char *msg, int len) {
 }
 
 static void assert_untouched(const outputs *o, const char *ctx) {
-  for (int i = 0; i < HMAX; ++i)
-    ck_assert_msg(o->hist_new[i] == SENT, "%s: hist_new[%d] was written (%g) on failure", ctx, i,
-                  o->hist_new[i]);
+  TST_ASSERT_ALL(int, i, 0, HMAX, o->hist_new[i] == SENT,
+                 "%s: hist_new[%d] was written (%g) on failure", ctx, i, o->hist_new[i]);
   ck_assert_msg(o->status == SENT_INT, "%s: contact_status was written (%d) on failure", ctx,
                 o->status);
-  for (int i = 0; i < B2B_PAIR_INFO_LEN + INFO_PAD; ++i)
-    ck_assert_msg(o->info[i] == SENT, "%s: info[%d] was written (%g) on failure", ctx, i,
-                  o->info[i]);
-  for (int i = 0; i < B2B_PAIR_NDOF + INFO_PAD; ++i)
-    ck_assert_msg(o->residual[i] == SENT, "%s: residual[%d] was written (%g) on failure", ctx, i,
-                  o->residual[i]);
-  for (int i = 0; i < LDMAX * B2B_PAIR_NDOF; ++i)
-    ck_assert_msg(o->tangent[i] == SENT, "%s: tangent[%d] was written (%g) on failure", ctx, i,
-                  o->tangent[i]);
+  TST_ASSERT_ALL(int, i, 0, B2B_PAIR_INFO_LEN + INFO_PAD, o->info[i] == SENT,
+                 "%s: info[%d] was written (%g) on failure", ctx, i, o->info[i]);
+  TST_ASSERT_ALL(int, i, 0, B2B_PAIR_NDOF + INFO_PAD, o->residual[i] == SENT,
+                 "%s: residual[%d] was written (%g) on failure", ctx, i, o->residual[i]);
+  TST_ASSERT_ALL(int, i, 0, LDMAX * B2B_PAIR_NDOF, o->tangent[i] == SENT,
+                 "%s: tangent[%d] was written (%g) on failure", ctx, i, o->tangent[i]);
 }
 
 /* Checks a failed call's message buffer: NUL within len, nothing written
@@ -226,8 +222,8 @@ static void assert_untouched(const outputs *o, const char *ctx) {
 static void check_message(const char *ctx, const char *msg, int len, size_t size, const char *w1,
                           const char *w2, const char *w3) {
   ck_assert_msg(memchr(msg, '\0', (size_t)len) != NULL, "%s: message not NUL-terminated", ctx);
-  for (size_t i = (size_t)len; i < size; ++i)
-    ck_assert_msg(msg[i] == GUARD, "%s: message buffer overrun at byte %zu", ctx, i);
+  TST_ASSERT_ALL(size_t, i, (size_t)len, size, msg[i] == GUARD,
+                 "%s: message buffer overrun at byte %zu", ctx, i);
   if (len > 1) ck_assert_msg(msg[0] != '\0', "%s: empty message", ctx);
   const char *w[3] = {w1, w2, w3};
   for (int k = 0; k < 3; ++k)
@@ -279,27 +275,25 @@ static int expect_ok(const char *ctx, pair_call *c, outputs *o) {
   const int st = run_call(c, o, msg, (int)sizeof msg);
   ck_assert_msg(st == B2B_OK, "%s: status %d (%s): %.*s", ctx, st, b2b_strerror(st),
                 (int)sizeof msg, msg);
-  for (size_t i = 0; i < sizeof msg; ++i)
-    ck_assert_msg(msg[i] == GUARD, "%s: a successful call wrote errmsg[%zu]", ctx, i);
+  TST_ASSERT_ALL(size_t, i, 0, sizeof msg, msg[i] == GUARD,
+                 "%s: a successful call wrote errmsg[%zu]", ctx, i);
   ck_assert_msg(o->status >= B2B_CONTACT_OPEN && o->status <= B2B_CONTACT_NO_NORMAL,
                 "%s: contact status %d", ctx, o->status);
   const double *hist = c->alias ? c->hist_old : o->hist_new;
-  for (int i = 0; i < c->hist_len; ++i)
-    ck_assert_msg(isfinite(hist[i]) && hist[i] != SENT, "%s: hist_new[%d] = %g", ctx, i, hist[i]);
-  for (int i = c->alias ? 0 : c->hist_len; i < HMAX; ++i)
-    ck_assert_msg(o->hist_new[i] == SENT, "%s: hist_new[%d] written beyond hist_len", ctx, i);
-  for (int i = 0; i < B2B_PAIR_INFO_LEN; ++i)
-    ck_assert_msg(isfinite(o->info[i]) && o->info[i] != SENT, "%s: info[%d] = %g (status %d)",
-                  ctx, i, o->info[i], o->status);
-  for (int i = B2B_INFO_SYMMETRIC + 1; i < B2B_PAIR_INFO_LEN; ++i)
-    ck_assert_msg(o->info[i] == 0.0, "%s: reserved info[%d] = %g", ctx, i, o->info[i]);
-  for (int i = 0; i < B2B_PAIR_NDOF; ++i)
-    ck_assert_msg(isfinite(o->residual[i]) && o->residual[i] != SENT, "%s: residual[%d] = %g",
-                  ctx, i, o->residual[i]);
-  for (int i = B2B_PAIR_INFO_LEN; i < B2B_PAIR_INFO_LEN + INFO_PAD; ++i)
-    ck_assert_msg(o->info[i] == SENT, "%s: info[%d] written beyond its length", ctx, i);
-  for (int i = B2B_PAIR_NDOF; i < B2B_PAIR_NDOF + INFO_PAD; ++i)
-    ck_assert_msg(o->residual[i] == SENT, "%s: residual[%d] written beyond its length", ctx, i);
+  TST_ASSERT_ALL(int, i, 0, c->hist_len, isfinite(hist[i]) && hist[i] != SENT,
+                 "%s: hist_new[%d] = %g", ctx, i, hist[i]);
+  TST_ASSERT_ALL(int, i, c->alias ? 0 : c->hist_len, HMAX, o->hist_new[i] == SENT,
+                 "%s: hist_new[%d] written beyond hist_len", ctx, i);
+  TST_ASSERT_ALL(int, i, 0, B2B_PAIR_INFO_LEN, isfinite(o->info[i]) && o->info[i] != SENT,
+                 "%s: info[%d] = %g (status %d)", ctx, i, o->info[i], o->status);
+  TST_ASSERT_ALL(int, i, B2B_INFO_SYMMETRIC + 1, B2B_PAIR_INFO_LEN, o->info[i] == 0.0,
+                 "%s: reserved info[%d] = %g", ctx, i, o->info[i]);
+  TST_ASSERT_ALL(int, i, 0, B2B_PAIR_NDOF, isfinite(o->residual[i]) && o->residual[i] != SENT,
+                 "%s: residual[%d] = %g", ctx, i, o->residual[i]);
+  TST_ASSERT_ALL(int, i, B2B_PAIR_INFO_LEN, B2B_PAIR_INFO_LEN + INFO_PAD, o->info[i] == SENT,
+                 "%s: info[%d] written beyond its length", ctx, i);
+  TST_ASSERT_ALL(int, i, B2B_PAIR_NDOF, B2B_PAIR_NDOF + INFO_PAD, o->residual[i] == SENT,
+                 "%s: residual[%d] written beyond its length", ctx, i);
   const int with_k = !(c->null_args & A_TANGENT);
   for (int i = 0; i < LDMAX * B2B_PAIR_NDOF; ++i) {
     const int col = with_k ? i / c->ldk : B2B_PAIR_NDOF, row = with_k ? i % c->ldk : 0;
@@ -317,14 +311,12 @@ static int expect_ok(const char *ctx, pair_call *c, outputs *o) {
 static void assert_no_force(const char *ctx, const pair_call *c, const outputs *o) {
   ck_assert_msg(o->info[B2B_INFO_NORMAL_FORCE] == 0.0, "%s: normal force %g", ctx,
                 o->info[B2B_INFO_NORMAL_FORCE]);
-  for (int i = 0; i < B2B_PAIR_NDOF; ++i)
-    ck_assert_msg(o->residual[i] == 0.0, "%s: residual[%d] = %g without force", ctx, i,
-                  o->residual[i]);
+  TST_ASSERT_ALL(int, i, 0, B2B_PAIR_NDOF, o->residual[i] == 0.0,
+                 "%s: residual[%d] = %g without force", ctx, i, o->residual[i]);
   if (!(c->null_args & A_TANGENT))
     for (int col = 0; col < B2B_PAIR_NDOF; ++col)
-      for (int row = 0; row < B2B_PAIR_NDOF; ++row)
-        ck_assert_msg(o->tangent[row + c->ldk * col] == 0.0, "%s: tangent(%d, %d) = %g without "
-                      "force", ctx, row, col, o->tangent[row + c->ldk * col]);
+      TST_ASSERT_ALL(int, row, 0, B2B_PAIR_NDOF, o->tangent[row + c->ldk * col] == 0.0,
+                     "%s: tangent(%d, %d) = %g without " "force", ctx, row, col, o->tangent[row + c->ldk * col]);
 }
 
 /* ===================================================== params helpers */
@@ -348,8 +340,8 @@ static void check_failure(const char *ctx, int st, int want, const char *w1, con
 static void check_success(const char *ctx, int st) {
   ck_assert_msg(st == B2B_OK, "%s: status %d (%s): %.*s", ctx, st, b2b_strerror(st),
                 B2B_ERRMSG_LEN, g_msg);
-  for (size_t i = 0; i < sizeof g_msg; ++i)
-    ck_assert_msg(g_msg[i] == GUARD, "%s: a successful call wrote errmsg[%zu]", ctx, i);
+  TST_ASSERT_ALL(size_t, i, 0, sizeof g_msg, g_msg[i] == GUARD,
+                 "%s: a successful call wrote errmsg[%zu]", ctx, i);
 }
 
 static b2b_params *new_params(void) {
@@ -465,9 +457,8 @@ static void check_unknown_key(const char *ctx, int st, const char *key, int real
   snprintf(quoted, sizeof quoted, "\"%s\"", key);
   check_failure(ctx, st, B2B_ERR_UNKNOWN_KEY, quoted, NULL, NULL);
   const char *const *known = real ? real_keys : int_keys;
-  for (int k = 0; k < 3; ++k)
-    ck_assert_msg(strstr(g_msg, known[k]) != NULL, "%s: message \"%s\" does not list \"%s\"",
-                  ctx, g_msg, known[k]);
+  TST_ASSERT_ALL(int, k, 0, 3, strstr(g_msg, known[k]) != NULL,
+                 "%s: message \"%s\" does not list \"%s\"", ctx, g_msg, known[k]);
 }
 
 START_TEST(test_params_unknown_key) {
@@ -1681,9 +1672,8 @@ START_TEST(test_pair_intersecting_axes) {
   CTX("%s axes intersect, fresh history", _i ? "straight" : "bent");
   ck_assert_int_eq(expect_ok(ctx, &c, &o), B2B_CONTACT_NO_NORMAL);
   assert_no_force(ctx, &c, &o);
-  for (int i = 0; i < c.hist_len; ++i)
-    ck_assert_msg(o.hist_new[i] == 0.0, "%s: hist_new[%d] = %g (nothing to record)", ctx, i,
-                  o.hist_new[i]);
+  TST_ASSERT_ALL(int, i, 0, c.hist_len, o.hist_new[i] == 0.0,
+                 "%s: hist_new[%d] = %g (nothing to record)", ctx, i, o.hist_new[i]);
 
   memcpy(c.hist_old, hist, sizeof hist);
   CTX("%s axes intersect, history with a normal", _i ? "straight" : "bent");

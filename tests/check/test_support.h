@@ -8,6 +8,28 @@
 
 #include <b2b/b2b.h>
 
+/* Asserts cond for every i in [lo, hi) with a single Check assertion: the
+ * loop runs in plain C and only the first failing i (if any) reaches
+ * ck_assert_msg, which then reports it with the message as usual. Check
+ * records every passed assertion (a message to its parent process each), so
+ * asserting per array element made the bad-input suites spend seconds in
+ * system calls. */
+#define TST_ASSERT_ALL(type, i, lo, hi, cond, ...)          \
+  do {                                                      \
+    type i##_first_bad_ = (hi);                             \
+    int i##_found_ = 0;                                     \
+    for (type i = (lo); i < (hi); ++i)                      \
+      if (!(cond)) {                                        \
+        i##_first_bad_ = i;                                 \
+        i##_found_ = 1;                                     \
+        break;                                              \
+      }                                                     \
+    if (i##_found_) {                                       \
+      type i = i##_first_bad_;                              \
+      ck_assert_msg(cond, __VA_ARGS__);                     \
+    }                                                       \
+  } while (0)
+
 /* The four curve kinds, in enum order. */
 extern const int tst_kinds[4];
 const char *tst_kind_name(int kind);
