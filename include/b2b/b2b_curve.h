@@ -50,7 +50,10 @@
  * the slot before it is missing; end_rule where the beam ends at its last
  * node, so the slot after it is missing:
  *                         first node  missing slot   last node  missing slot
- *   LINEAR                (rules are ignored: the chord needs no neighbours)
+ *   LINEAR                (rules do not change the chord, which needs no
+ *                         neighbours; they still say where the beam ends,
+ *                         which decides who owns a contact on the end joint,
+ *                         see b2b_pair.h)
  *   HERMITE_NODAL[_W.]    x2          x1             x3         x4
  *   HERMITE_MIDPOINT      x2          x1             x2         x3
  * (a midpoint segment at a beam end is a half element: from x2 to the

@@ -156,7 +156,8 @@
  * next segment) or t' = 1 + (t + 1) s_from / s_to (direction -1), i.e. the
  * same arc length from the joint to first order, and copies the rest (the
  * normal, the force components, stick or slip). The two segments must share
- * the joint (x_from(+-1) = x_to(-+1) to 1e-10 of their length, else
+ * the joint (x_from(+-1) = x_to(-+1) to 1e-10 of the sum of their chord
+ * lengths, else
  * B2B_ERR_RANGE; so is a mapped parameter beyond 1e3, and nothing is
  * written). The parameter is mapped whether or not the history holds a
  * contact (without one it is the warm start's point); a fresh (all-zero)

@@ -18,6 +18,9 @@ namespace {
 
 bool is(const char* key, const char* name) { return std::strcmp(key, name) == 0; }
 
+// Messages echo at most 64 characters of a caller's key ("%.64s"), so that
+// B2B_ERRMSG_LEN always holds the whole message (b2b.h).
+
 const char kRealKeys[] =
     "\"penalty\", \"regularization_gap\", \"parallel_angle\", \"friction\", "
     "\"tangential_penalty\"";
@@ -27,7 +30,7 @@ int check_settable(const Reporter& r, const b2b_params* params, const char* key)
   if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
   if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
   if (params->p.finalized)
-    return r.fail(B2B_ERR_STATE, "params is finalized (read-only); cannot set \"%s\"", key);
+    return r.fail(B2B_ERR_STATE, "params is finalized (read-only); cannot set \"%.64s\"", key);
   return B2B_OK;
 }
 
@@ -59,10 +62,10 @@ int b2b_params_set_real(b2b_params* params, const char* key, double value, char*
     b2b::pair::Params& p = params->p;
     if (!is(key, "penalty") && !is(key, "regularization_gap") && !is(key, "parallel_angle") &&
         !is(key, "friction") && !is(key, "tangential_penalty"))
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%s\" (real keys: %s)", key,
+      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%.64s\" (real keys: %s)", key,
                     kRealKeys);
     if (!std::isfinite(value))
-      return r.fail(B2B_ERR_NONFINITE, "\"%s\" = %g is not finite", key, value);
+      return r.fail(B2B_ERR_NONFINITE, "\"%.64s\" = %g is not finite", key, value);
     if (is(key, "penalty")) {
       if (value < 0.0) return r.fail(B2B_ERR_RANGE, "\"penalty\" = %g must be >= 0", value);
       p.penalty = value;
@@ -113,7 +116,7 @@ int b2b_params_set_int(b2b_params* params, const char* key, int value, char* err
         return r.fail(B2B_ERR_RANGE, "\"max_iterations\" = %d must be in 1 .. 100000", value);
       p.max_iterations = value;
     } else {
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%s\" (integer keys: %s)", key,
+      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%.64s\" (integer keys: %s)", key,
                     kIntKeys);
     }
     return B2B_OK;
@@ -139,7 +142,7 @@ int b2b_params_get_real(const b2b_params* params, const char* key, double* value
     else if (is(key, "tangential_penalty"))
       *value = p.tangential_penalty;
     else
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%s\" (real keys: %s)", key,
+      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%.64s\" (real keys: %s)", key,
                     kRealKeys);
     return B2B_OK;
   });
@@ -162,7 +165,7 @@ int b2b_params_get_int(const b2b_params* params, const char* key, int* value, ch
     else if (is(key, "tangent"))
       *value = p.tangent;
     else
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%s\" (integer keys: %s)", key,
+      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%.64s\" (integer keys: %s)", key,
                     kIntKeys);
     return B2B_OK;
   });

@@ -71,6 +71,10 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   info[B2B_INFO_ENERGY] = law.energy;
   if (!(law.force > 0.0)) return no_force(B2B_CONTACT_OPEN);
   out.contact_status = B2B_CONTACT_ACTIVE;
+  // With intersecting axes the normal is the history's and the exact tangent
+  // omits its rotation, which leaves it unsymmetric (tangent_assembly.cpp):
+  // said here, so that info is the same with and without a tangent.
+  if (k.rho_signed == 0.0) info[B2B_INFO_SYMMETRIC] = 0.0;
 
   // Stage 2: force response. Residual -f_N dg/dX with dg/dX = G = [P_A^T n;
   // -P_B^T n] (the xi, eta terms vanish by orthogonality).

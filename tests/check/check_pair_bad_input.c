@@ -542,16 +542,18 @@ START_TEST(test_params_long_unknown_key) {
   b2b_params *p = new_params();
   double v = SENT;
   int iv = SENT_INT;
+  /* The key is echoed shortened, so the whole message (up to the list of
+   * keys and its closing parenthesis) fits in B2B_ERRMSG_LEN, as b2b.h says. */
   check_failure("set_real(long key)",
                 b2b_params_set_real(p, key, 1.0, fresh_msg(), B2B_ERRMSG_LEN),
-                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", NULL, NULL);
+                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"tangential_penalty\")", NULL);
   check_failure("set_int(long key)", b2b_params_set_int(p, key, 1, fresh_msg(), B2B_ERRMSG_LEN),
-                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", NULL, NULL);
+                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"tangent\")", NULL);
   check_failure("get_real(long key)",
                 b2b_params_get_real(p, key, &v, fresh_msg(), B2B_ERRMSG_LEN),
-                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", NULL, NULL);
+                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"tangential_penalty\")", NULL);
   check_failure("get_int(long key)", b2b_params_get_int(p, key, &iv, fresh_msg(), B2B_ERRMSG_LEN),
-                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", NULL, NULL);
+                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"tangent\")", NULL);
   ck_assert(v == SENT && iv == SENT_INT);
   /* A key set after a finalize names a long key the same way. */
   ck_assert_int_eq(b2b_params_set_real(p, "penalty", PEN, NULL, 0), B2B_OK);
@@ -1685,6 +1687,14 @@ START_TEST(test_pair_intersecting_axes) {
   ck_assert_msg(tst_max_abs(o.residual, 24) > 0.0, "%s: zero residual", ctx);
   ck_assert_msg(fabs(o.info[B2B_INFO_NORMAL_FORCE] - PEN * 2 * RADIUS) < 1e-9, "%s: force %g", ctx,
                 o.info[B2B_INFO_NORMAL_FORCE]);
+  /* The tangent omits the history normal's rotation and is not symmetric;
+   * info says so with and without the tangent (it said 1 without). */
+  ck_assert_msg(o.info[B2B_INFO_SYMMETRIC] == 0.0, "%s: symmetric %g with the tangent", ctx,
+                o.info[B2B_INFO_SYMMETRIC]);
+  c.null_args = A_TANGENT;
+  ck_assert_int_eq(expect_ok(ctx, &c, &o), B2B_CONTACT_ACTIVE);
+  ck_assert_msg(o.info[B2B_INFO_SYMMETRIC] == 0.0, "%s: symmetric %g without the tangent", ctx,
+                o.info[B2B_INFO_SYMMETRIC]);
   b2b_params_destroy(&p);
 }
 END_TEST
