@@ -21,12 +21,17 @@
 
 #include "ring_accuracy.h"
 
-#define N_KINDS 4
+#define N_KINDS B2B_CURVE_KIND_COUNT
 #define N_MESHES 6
-static const int kKinds[N_KINDS] = {B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT,
-                                    B2B_CURVE_HERMITE_NODAL, B2B_CURVE_HERMITE_NODAL_WEIGHTED};
-static const char *kNames[N_KINDS] = {"linear", "hermite-midpoint", "hermite-nodal",
-                                      "hermite-nodal-weighted"};
+/* Every kind gets a column: one the library adds needs its name here. */
+static const int kKinds[] = {B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL,
+                             B2B_CURVE_HERMITE_NODAL_WEIGHTED};
+static const char *kNames[] = {"linear", "hermite-midpoint", "hermite-nodal",
+                               "hermite-nodal-weighted"};
+typedef char every_kind_has_a_column[sizeof kKinds / sizeof kKinds[0] == N_KINDS &&
+                                             sizeof kNames / sizeof kNames[0] == N_KINDS
+                                         ? 1
+                                         : -1]; /* C99: no _Static_assert */
 static const int kN[N_MESHES] = {8, 16, 32, 64, 128, 256};
 
 static void fail(const char *what, int st) {

@@ -110,6 +110,7 @@ enum {
   B2B_CURVE_HERMITE_NODAL = 2,
   B2B_CURVE_HERMITE_NODAL_WEIGHTED = 3
 };
+#define B2B_CURVE_KIND_COUNT 4 /* number of kinds, 0 .. B2B_CURVE_KIND_COUNT - 1; grows with them */
 
 /* Rules at beam ends. Values are fixed. */
 enum {

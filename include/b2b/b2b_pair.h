@@ -98,8 +98,9 @@
  *                  ownership) or beyond a beam end; no force
  *   PARALLEL       crossing angle below "parallel_angle", a singular
  *                  closest-point problem, or a cusp (a centreline whose
- *                  tangent vanishes at the closest point, e.g. a host end
- *                  tangent opposite to the chord): point-wise contact is not
+ *                  tangent vanishes at or next to the closest point, speed
+ *                  below 1% of its chord's, e.g. a host end tangent
+ *                  opposite to the chord): point-wise contact is not
  *                  defined; no force
  *   NOT_CONVERGED  the closest-point search did not converge; no force
  *   NO_NORMAL      the axes intersect exactly and there is no previous
@@ -187,8 +188,9 @@ extern "C" {
 
 typedef struct b2b_params b2b_params;
 
-/* Normal laws. Values are fixed. */
+/* Normal laws. Values are fixed; new laws are appended. */
 enum { B2B_LAW_LINEAR = 0, B2B_LAW_QUADRATIC = 1 };
+#define B2B_LAW_COUNT 2 /* number of laws, 0 .. B2B_LAW_COUNT - 1; grows with them */
 
 /* Contact status of a pair. Values are fixed. */
 enum {

@@ -14,6 +14,7 @@
 #include "model_handle.hpp"
 #include "params_handle.hpp"
 #include "segment_checks.hpp"
+#include "tables.hpp"
 
 using b2b::capi::check_finalized;
 using b2b::capi::check_kind;
@@ -21,8 +22,11 @@ using b2b::capi::check_model_finalized;
 using b2b::capi::check_results;
 using b2b::capi::check_tangents;
 using b2b::capi::guarded;
+using b2b::capi::Option;
+using b2b::capi::OptionType;
 using b2b::capi::report_model_problem;
 using b2b::capi::Reporter;
+using b2b::capi::Valid;
 namespace md = b2b::model;
 
 namespace b2b {
@@ -114,7 +118,29 @@ int check_setup(const Reporter& r, const b2b_model* model) {
   return B2B_OK;
 }
 
-bool is(const char* key, const char* name) { return std::strcmp(key, name) == 0; }
+// The keys of b2b_model_set_real / _set_int, in the order of b2b_model.h's
+// table (the messages list them in this order). A new option is one entry
+// here, its member of the model and its line in b2b_model.h.
+constexpr Option<b2b_model> kOptions[] = {
+    {"search_margin", OptionType::Real,
+     Valid::interval(0.0, true, B2B_COORD_MAX, false, "B2B_COORD_MAX"),
+     [](b2b_model& h, double v) { h.m.search_margin = v; }, nullptr},
+    {"threads", OptionType::Int, Valid::at_least(0),
+     [](b2b_model& h, double v) { h.m.threads = static_cast<int>(v); }, nullptr},
+    {"max_handover_hops", OptionType::Int, Valid::interval(1, false, 1000, false),
+     [](b2b_model& h, double v) { h.m.max_hops = static_cast<int>(v); }, nullptr},
+    {"message_base", OptionType::Int, Valid::interval(0, false, 1, false),
+     [](b2b_model& h, double v) { h.message_base = static_cast<int>(v); }, nullptr},
+};
+
+int set_by_key(const Reporter& r, b2b_model* model, const char* key, OptionType type,
+               double value) {
+  if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
+  if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
+  const Option<b2b_model>* o = nullptr;
+  if (int st = b2b::capi::lookup_option(r, kOptions, key, type, &o)) return st;
+  return b2b::capi::set_option(r, *o, *model, value);
+}
 
 }  // namespace
 
@@ -234,45 +260,13 @@ int b2b_model_set_self_contact(b2b_model* model, int beam, int on, double exclus
 int b2b_model_set_real(b2b_model* model, const char* key, double value, char* errmsg,
                        int errmsg_len) {
   const Reporter r("b2b_model_set_real", errmsg, errmsg_len);
-  return guarded(r, [&]() -> int {
-    if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
-    if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
-    if (!is(key, "search_margin"))
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%.64s\" (real keys: "
-                    "\"search_margin\")", key);
-    if (!std::isfinite(value))
-      return r.fail(B2B_ERR_NONFINITE, "\"search_margin\" = %g is not finite", value);
-    if (!(value > 0.0) || value > B2B_COORD_MAX)
-      return r.fail(B2B_ERR_RANGE, "\"search_margin\" = %g must be > 0 and <= B2B_COORD_MAX",
-                    value);
-    model->m.search_margin = value;
-    return B2B_OK;
-  });
+  return guarded(r, [&]() -> int { return set_by_key(r, model, key, OptionType::Real, value); });
 }
 
 int b2b_model_set_int(b2b_model* model, const char* key, int value, char* errmsg,
                       int errmsg_len) {
   const Reporter r("b2b_model_set_int", errmsg, errmsg_len);
-  return guarded(r, [&]() -> int {
-    if (model == nullptr) return r.fail(B2B_ERR_NULL, "model is NULL");
-    if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
-    if (is(key, "threads")) {
-      if (value < 0) return r.fail(B2B_ERR_RANGE, "\"threads\" = %d must be >= 0", value);
-      model->m.threads = value;
-    } else if (is(key, "max_handover_hops")) {
-      if (value < 1 || value > 1000)
-        return r.fail(B2B_ERR_RANGE, "\"max_handover_hops\" = %d must be in 1 .. 1000", value);
-      model->m.max_hops = value;
-    } else if (is(key, "message_base")) {
-      if (value != 0 && value != 1)
-        return r.fail(B2B_ERR_RANGE, "\"message_base\" = %d must be 0 or 1", value);
-      model->message_base = value;
-    } else {
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%.64s\" (integer keys: "
-                    "\"threads\", \"max_handover_hops\", \"message_base\")", key);
-    }
-    return B2B_OK;
-  });
+  return guarded(r, [&]() -> int { return set_by_key(r, model, key, OptionType::Int, value); });
 }
 
 int b2b_model_finalize(b2b_model* model, int n_nodes, char* errmsg, int errmsg_len) {

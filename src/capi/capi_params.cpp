@@ -1,36 +1,91 @@
 // C entry points of the contact parameters: a handle set by key, validated
 // per key and as a whole (finalize), read-only afterwards.
-#include <cmath>
-#include <cstring>
-#include <new>
-
 #include <b2b/b2b.h>
 
 #include "../pair/history.hpp"
+#include "../pair/laws.hpp"
+#include "../pair/tangent_options.hpp"
 #include "firewall.hpp"
 #include "params_handle.hpp"
+#include "tables.hpp"
 
 using b2b::capi::check_finalized;
 using b2b::capi::guarded;
+using b2b::capi::Option;
+using b2b::capi::OptionType;
 using b2b::capi::Reporter;
+using b2b::capi::Valid;
+using b2b::pair::Params;
 
 namespace {
 
-bool is(const char* key, const char* name) { return std::strcmp(key, name) == 0; }
-
-// Messages echo at most 64 characters of a caller's key ("%.64s"), so that
-// B2B_ERRMSG_LEN always holds the whole message (b2b.h).
-
-const char kRealKeys[] =
-    "\"penalty\", \"regularization_gap\", \"parallel_angle\", \"friction\", "
-    "\"tangential_penalty\"";
-const char kIntKeys[] = "\"law\", \"warm_start\", \"max_iterations\", \"tangent\"";
+// The keys of b2b_params, in the order of b2b_pair.h's table (the messages
+// list them in this order). A new option is one entry here, its member of
+// Params and its line in b2b_pair.h.
+constexpr Option<Params> kOptions[] = {
+    {"penalty", OptionType::Real, Valid::at_least(0.0),
+     [](Params& p, double v) {
+       p.penalty = v;
+       p.penalty_set = true;
+     },
+     [](const Params& p) { return p.penalty; }},
+    {"law", OptionType::Int, Valid::one_of(b2b::pair::kLawEnumeration),
+     [](Params& p, double v) { p.law = static_cast<int>(v); },
+     [](const Params& p) { return static_cast<double>(p.law); }},
+    {"regularization_gap", OptionType::Real, Valid::above(0.0),
+     [](Params& p, double v) {
+       p.regularization_gap = v;
+       p.regularization_gap_set = true;
+     },
+     [](const Params& p) { return p.regularization_gap; }},
+    {"parallel_angle", OptionType::Real,
+     Valid::interval(0.0, false, 90.0, true, nullptr, "degrees"),
+     [](Params& p, double v) { p.parallel_angle_deg = v; },
+     [](const Params& p) { return p.parallel_angle_deg; }},
+    {"warm_start", OptionType::Int, Valid::interval(0, false, 1, false),
+     [](Params& p, double v) { p.warm_start = static_cast<int>(v); },
+     [](const Params& p) { return static_cast<double>(p.warm_start); }},
+    {"max_iterations", OptionType::Int, Valid::interval(1, false, 100000, false),
+     [](Params& p, double v) { p.max_iterations = static_cast<int>(v); },
+     [](const Params& p) { return static_cast<double>(p.max_iterations); }},
+    {"friction", OptionType::Real, Valid::at_least(0.0),
+     [](Params& p, double v) { p.friction = v; },
+     [](const Params& p) { return p.friction; }},
+    {"tangential_penalty", OptionType::Real, Valid::above(0.0),
+     [](Params& p, double v) {
+       p.tangential_penalty = v;
+       p.tangential_penalty_set = true;
+     },
+     [](const Params& p) { return p.tangential_penalty; }},
+    {"tangent", OptionType::Int, Valid::one_of(b2b::pair::kTangentModeEnumeration),
+     [](Params& p, double v) { p.tangent = static_cast<int>(v); },
+     [](const Params& p) { return static_cast<double>(p.tangent); }},
+};
 
 int check_settable(const Reporter& r, const b2b_params* params, const char* key) {
   if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
   if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
   if (params->p.finalized)
     return r.fail(B2B_ERR_STATE, "params is finalized (read-only); cannot set \"%.64s\"", key);
+  return B2B_OK;
+}
+
+int set_by_key(const Reporter& r, b2b_params* params, const char* key, OptionType type,
+               double value) {
+  if (int st = check_settable(r, params, key)) return st;
+  const Option<Params>* o = nullptr;
+  if (int st = b2b::capi::lookup_option(r, kOptions, key, type, &o)) return st;
+  return b2b::capi::set_option(r, *o, params->p, value);
+}
+
+int get_by_key(const Reporter& r, const b2b_params* params, const char* key, OptionType type,
+               const void* value, double* got) {
+  if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
+  if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
+  if (value == nullptr) return r.fail(B2B_ERR_NULL, "value is NULL");
+  const Option<Params>* o = nullptr;
+  if (int st = b2b::capi::lookup_option(r, kOptions, key, type, &o)) return st;
+  *got = o->get(params->p);
   return B2B_OK;
 }
 
@@ -57,93 +112,22 @@ int b2b_params_destroy(b2b_params** params) {
 int b2b_params_set_real(b2b_params* params, const char* key, double value, char* errmsg,
                         int errmsg_len) {
   const Reporter r("b2b_params_set_real", errmsg, errmsg_len);
-  return guarded(r, [&]() -> int {
-    if (int st = check_settable(r, params, key)) return st;
-    b2b::pair::Params& p = params->p;
-    if (!is(key, "penalty") && !is(key, "regularization_gap") && !is(key, "parallel_angle") &&
-        !is(key, "friction") && !is(key, "tangential_penalty"))
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%.64s\" (real keys: %s)", key,
-                    kRealKeys);
-    if (!std::isfinite(value))
-      return r.fail(B2B_ERR_NONFINITE, "\"%.64s\" = %g is not finite", key, value);
-    if (is(key, "penalty")) {
-      if (value < 0.0) return r.fail(B2B_ERR_RANGE, "\"penalty\" = %g must be >= 0", value);
-      p.penalty = value;
-      p.penalty_set = true;
-    } else if (is(key, "regularization_gap")) {
-      if (!(value > 0.0))
-        return r.fail(B2B_ERR_RANGE, "\"regularization_gap\" = %g must be > 0", value);
-      p.regularization_gap = value;
-      p.regularization_gap_set = true;
-    } else if (is(key, "friction")) {
-      if (value < 0.0) return r.fail(B2B_ERR_RANGE, "\"friction\" = %g must be >= 0", value);
-      p.friction = value;
-    } else if (is(key, "tangential_penalty")) {
-      if (!(value > 0.0))
-        return r.fail(B2B_ERR_RANGE, "\"tangential_penalty\" = %g must be > 0", value);
-      p.tangential_penalty = value;
-      p.tangential_penalty_set = true;
-    } else {  // "parallel_angle"
-      if (value < 0.0 || value >= 90.0)
-        return r.fail(B2B_ERR_RANGE, "\"parallel_angle\" = %g must be in [0, 90) degrees", value);
-      p.parallel_angle_deg = value;
-    }
-    return B2B_OK;
-  });
+  return guarded(r, [&]() -> int { return set_by_key(r, params, key, OptionType::Real, value); });
 }
 
 int b2b_params_set_int(b2b_params* params, const char* key, int value, char* errmsg,
                        int errmsg_len) {
   const Reporter r("b2b_params_set_int", errmsg, errmsg_len);
-  return guarded(r, [&]() -> int {
-    if (int st = check_settable(r, params, key)) return st;
-    b2b::pair::Params& p = params->p;
-    if (is(key, "law")) {
-      if (value != B2B_LAW_LINEAR && value != B2B_LAW_QUADRATIC)
-        return r.fail(B2B_ERR_UNKNOWN_KIND, "unknown \"law\" %d (B2B_LAW_* are 0 .. 1)", value);
-      p.law = value;
-    } else if (is(key, "warm_start")) {
-      if (value != 0 && value != 1)
-        return r.fail(B2B_ERR_RANGE, "\"warm_start\" = %d must be 0 or 1", value);
-      p.warm_start = value;
-    } else if (is(key, "tangent")) {
-      if (value < B2B_TANGENT_EXACT || value > B2B_TANGENT_FD)
-        return r.fail(B2B_ERR_UNKNOWN_KIND, "unknown \"tangent\" %d (B2B_TANGENT_* are 0 .. 3)",
-                      value);
-      p.tangent = value;
-    } else if (is(key, "max_iterations")) {
-      if (value < 1 || value > 100000)
-        return r.fail(B2B_ERR_RANGE, "\"max_iterations\" = %d must be in 1 .. 100000", value);
-      p.max_iterations = value;
-    } else {
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%.64s\" (integer keys: %s)", key,
-                    kIntKeys);
-    }
-    return B2B_OK;
-  });
+  return guarded(r, [&]() -> int { return set_by_key(r, params, key, OptionType::Int, value); });
 }
 
 int b2b_params_get_real(const b2b_params* params, const char* key, double* value, char* errmsg,
                         int errmsg_len) {
   const Reporter r("b2b_params_get_real", errmsg, errmsg_len);
   return guarded(r, [&]() -> int {
-    if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
-    if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
-    if (value == nullptr) return r.fail(B2B_ERR_NULL, "value is NULL");
-    const b2b::pair::Params& p = params->p;
-    if (is(key, "penalty"))
-      *value = p.penalty;
-    else if (is(key, "regularization_gap"))
-      *value = p.regularization_gap;
-    else if (is(key, "parallel_angle"))
-      *value = p.parallel_angle_deg;
-    else if (is(key, "friction"))
-      *value = p.friction;
-    else if (is(key, "tangential_penalty"))
-      *value = p.tangential_penalty;
-    else
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown real key \"%.64s\" (real keys: %s)", key,
-                    kRealKeys);
+    double got = 0.0;
+    if (int st = get_by_key(r, params, key, OptionType::Real, value, &got)) return st;
+    *value = got;
     return B2B_OK;
   });
 }
@@ -152,21 +136,9 @@ int b2b_params_get_int(const b2b_params* params, const char* key, int* value, ch
                        int errmsg_len) {
   const Reporter r("b2b_params_get_int", errmsg, errmsg_len);
   return guarded(r, [&]() -> int {
-    if (params == nullptr) return r.fail(B2B_ERR_NULL, "params is NULL");
-    if (key == nullptr) return r.fail(B2B_ERR_NULL, "key is NULL");
-    if (value == nullptr) return r.fail(B2B_ERR_NULL, "value is NULL");
-    const b2b::pair::Params& p = params->p;
-    if (is(key, "law"))
-      *value = p.law;
-    else if (is(key, "warm_start"))
-      *value = p.warm_start;
-    else if (is(key, "max_iterations"))
-      *value = p.max_iterations;
-    else if (is(key, "tangent"))
-      *value = p.tangent;
-    else
-      return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown integer key \"%.64s\" (integer keys: %s)", key,
-                    kIntKeys);
+    double got = 0.0;
+    if (int st = get_by_key(r, params, key, OptionType::Int, value, &got)) return st;
+    *value = static_cast<int>(got);
     return B2B_OK;
   });
 }
@@ -182,8 +154,8 @@ int b2b_params_finalize(b2b_params* params, char* errmsg, int errmsg_len) {
       case b2b::pair::MissingOption::Penalty:
         return r.fail(B2B_ERR_STATE, "\"penalty\" has not been set");
       case b2b::pair::MissingOption::RegularizationGap:
-        return r.fail(B2B_ERR_STATE,
-                      "\"law\" is B2B_LAW_QUADRATIC but \"regularization_gap\" has not been set");
+        return r.fail(B2B_ERR_STATE, "\"law\" is %s but \"regularization_gap\" has not been set",
+                      b2b::pair::law_info(p.law).name);
       case b2b::pair::MissingOption::TangentialPenalty:
         return r.fail(B2B_ERR_STATE,
                       "\"friction\" is %g but \"tangential_penalty\" has not been set",

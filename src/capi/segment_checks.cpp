@@ -4,13 +4,14 @@
 
 #include <b2b/b2b.h>
 
+#include "../curve/kinds.hpp"
+#include "tables.hpp"
+
 namespace b2b {
 namespace capi {
 namespace {
 
 const char kAxis[] = "xyz";
-
-bool known_rule(int rule) { return rule >= B2B_END_NEIGHBOUR && rule <= B2B_END_TANGENT; }
 
 // Unit direction of a host end tangent; scaled first so that any finite
 // vector, however large or small, normalises without overflow.
@@ -33,29 +34,23 @@ int unit_tangent(const Reporter& r, const char* beam, const double* t, const cha
 }  // namespace
 
 int check_kind(const Reporter& r, int kind, const char* beam) {
-  if (kind < B2B_CURVE_LINEAR || kind > B2B_CURVE_HERMITE_NODAL_WEIGHTED)
-    return r.fail(B2B_ERR_UNKNOWN_KIND,
-                  "%sunknown curve kind %d (B2B_CURVE_LINEAR .. B2B_CURVE_HERMITE_NODAL_WEIGHTED "
-                  "are 0 .. 3)",
-                  beam, kind);
-  return B2B_OK;
+  return check_enumerated(r, beam, "curve kind", kind, curve::kKindEnumeration);
 }
 
 int check_segment(const Reporter& r, const char* beam, int kind, int start_rule, int end_rule,
                   const double* patch, const double* end_tangents, double unit_tangents[6]) {
   if (int st = check_kind(r, kind, beam)) return st;
-  if (!known_rule(start_rule))
-    return r.fail(B2B_ERR_UNKNOWN_KIND, "%sunknown start_rule %d (B2B_END_* are 0 .. 2)", beam,
-                  start_rule);
-  if (!known_rule(end_rule))
-    return r.fail(B2B_ERR_UNKNOWN_KIND, "%sunknown end_rule %d (B2B_END_* are 0 .. 2)", beam,
-                  end_rule);
-  if (kind == B2B_CURVE_HERMITE_MIDPOINT && start_rule != B2B_END_NEIGHBOUR &&
-      end_rule != B2B_END_NEIGHBOUR)
+  if (int st = check_enumerated(r, beam, "start_rule", start_rule, curve::kEndRuleEnumeration))
+    return st;
+  if (int st = check_enumerated(r, beam, "end_rule", end_rule, curve::kEndRuleEnumeration))
+    return st;
+  const curve::KindInfo& info = curve::kind_info(kind);
+  if (info.centred_on_node && start_rule != B2B_END_NEIGHBOUR && end_rule != B2B_END_NEIGHBOUR)
     return r.fail(B2B_ERR_RANGE,
-                  "%sa midpoint segment cannot both start and end its beam (such a beam would "
-                  "have one node); start_rule and end_rule are both beam ends",
-                  beam);
+                  "%sa %s segment cannot both start and end its beam (it is centred on a node, "
+                  "so such a beam would have one node); start_rule and end_rule are both beam "
+                  "ends",
+                  beam, info.name);
 
   const unsigned used = curve::used_slots(kind, start_rule, end_rule);
   for (int slot = 0; slot < 4; ++slot) {

@@ -8,6 +8,7 @@
 #include <b2b/b2b.h>
 
 #include "hermite_basis.hpp"
+#include "kinds.hpp"
 #include "vec3.hpp"
 
 namespace b2b {
@@ -26,31 +27,20 @@ bool coincident(const double* X, int sa, int sb) {
   return !(dot3(d, d) > tol * tol);
 }
 
-bool is_nodal(int kind) {
-  return kind == B2B_CURVE_HERMITE_NODAL || kind == B2B_CURVE_HERMITE_NODAL_WEIGHTED;
-}
-
 }  // namespace
 
 unsigned used_slots(int kind, int start_rule, int end_rule) {
-  const bool has_prev = start_rule == B2B_END_NEIGHBOUR;
-  const bool has_next = end_rule == B2B_END_NEIGHBOUR;
-  switch (kind) {
-    case B2B_CURVE_LINEAR:
-      return 0x6u;
-    case B2B_CURVE_HERMITE_MIDPOINT:
-      return 0x2u | (has_prev ? 0x1u : 0u) | (has_next ? 0x4u : 0u);
-    default:
-      return 0x6u | (has_prev ? 0x1u : 0u) | (has_next ? 0x8u : 0u);
-  }
+  const KindInfo& k = kind_info(kind);
+  return k.slots | (start_rule == B2B_END_NEIGHBOUR ? k.start_neighbour_slots : 0u) |
+         (end_rule == B2B_END_NEIGHBOUR ? k.end_neighbour_slots : 0u);
 }
 
 bool uses_start_tangent(int kind, int start_rule) {
-  return kind != B2B_CURVE_LINEAR && start_rule == B2B_END_TANGENT;
+  return kind_info(kind).host_tangents && start_rule == B2B_END_TANGENT;
 }
 
 bool uses_end_tangent(int kind, int end_rule) {
-  return kind != B2B_CURVE_LINEAR && end_rule == B2B_END_TANGENT;
+  return kind_info(kind).host_tangents && end_rule == B2B_END_TANGENT;
 }
 
 void Segment::set_linear(int k, double c0, double c1, double c2, double c3, const double* X) {
@@ -60,113 +50,163 @@ void Segment::set_linear(int k, double c0, double c1, double c2, double c3, cons
   t.coef[1] = c1;
   t.coef[2] = c2;
   t.coef[3] = c3;
+  // From the nodes' offsets to the base node: a position term (coefficients
+  // summing to 1) is then the base plus an offset formed at the size of the
+  // patch, so a midpoint far from the coordinates' origin loses nothing in
+  // point_from; a tangent term (coefficients summing to 0) is the same
+  // difference either way.
+  const bool position = (k % 2 == 0);
   for (int i = 0; i < 3; ++i) {
     double v = 0.0;
     for (int s = 0; s < 4; ++s)
-      if (t.coef[s] != 0.0) v += t.coef[s] * X[3 * s + i];  // unused slots are never read
-    t.value[i] = v;
+      if (t.coef[s] != 0.0) v += t.coef[s] * (X[3 * s + i] - base_[i]);  // unused slots are never read
+    t.offset[i] = position ? v : 0.0;
+    t.value[i] = position ? base_[i] + v : v;
   }
+}
+
+namespace {
+
+Failure rejected(int status, int slot_a, int slot_b) {
+  Failure f;
+  f.status = status;
+  f.slot_a = slot_a;
+  f.slot_b = slot_b;
+  return f;
+}
+
+// An end tangent whose direction follows the nodes a, b, c (the end node b
+// and its neighbours), by the kind's rule.
+void set_direction(TangentTerm& tt, TangentTerm::Dir dir, int a, int b, int c) {
+  tt.dir = dir;
+  tt.a = a;
+  tt.b = b;
+  tt.c = c;
+}
+
+// An end tangent along the host's unit direction u (a constant).
+void set_given(TangentTerm& tt, const double* u) {
+  tt.dir = TangentTerm::Dir::Constant;
+  for (int i = 0; i < 3; ++i) tt.given[i] = u[i];
+}
+
+}  // namespace
+
+TangentTerm& Segment::set_tangent(int k, double sigma, int p, int q) {
+  Term& t = term_[k];
+  t.nonlinear = true;
+  t.tangent.sigma = sigma;
+  t.tangent.p = p;
+  t.tangent.q = q;
+  return t.tangent;
 }
 
 Failure Segment::build(int kind, int start_rule, int end_rule, const double* X,
                        const double* unit_tangents, bool derivatives) {
-  Failure f;
-  auto reject = [&f](int status, int sa, int sb) {
-    f.status = status;
-    f.slot_a = sa;
-    f.slot_b = sb;
-    return f;
-  };
-  linear_kind_ = (kind == B2B_CURVE_LINEAR);
+  linear_kind_ = false;
   for (Term& t : term_) t.nonlinear = false;
-
-  // A nonlinear end tangent sigma * |x_q - x_p| * unit(u).
-  auto set_tangent = [this](int k, double sigma, int p, int q) -> TangentTerm& {
-    Term& t = term_[k];
-    t.nonlinear = true;
-    t.tangent.sigma = sigma;
-    t.tangent.p = p;
-    t.tangent.q = q;
-    return t.tangent;
-  };
-  auto set_direction = [](TangentTerm& tt, int kind_, int a, int b, int c) {
-    tt.dir = (kind_ == B2B_CURVE_HERMITE_NODAL_WEIGHTED) ? TangentTerm::Dir::Weighted
-                                                        : TangentTerm::Dir::Chord;
-    tt.a = a;
-    tt.b = b;
-    tt.c = c;
-  };
-  auto set_given = [](TangentTerm& tt, const double* u) {
-    tt.dir = TangentTerm::Dir::Constant;
-    for (int i = 0; i < 3; ++i) tt.given[i] = u[i];
-  };
-
-  if (kind == B2B_CURVE_LINEAR || is_nodal(kind)) {
-    if (coincident(X, 1, 2)) return reject(B2B_ERR_COINCIDENT, 1, 2);
-    if (is_nodal(kind) && start_rule == B2B_END_NEIGHBOUR) {
-      if (coincident(X, 0, 1)) return reject(B2B_ERR_COINCIDENT, 0, 1);
-      if (coincident(X, 0, 2)) return reject(B2B_ERR_FOLDED, 0, 2);
-    }
-    if (is_nodal(kind) && end_rule == B2B_END_NEIGHBOUR) {
-      if (coincident(X, 2, 3)) return reject(B2B_ERR_COINCIDENT, 2, 3);
-      if (coincident(X, 1, 3)) return reject(B2B_ERR_FOLDED, 1, 3);
-    }
-    set_linear(0, 0, 1, 0, 0, X);  // x2
-    set_linear(2, 0, 0, 1, 0, X);  // x3
-    // The chord tangent (x3 - x2)/2: the linear kind, and a reflected ghost.
-    if (kind == B2B_CURVE_LINEAR || start_rule == B2B_END_REFLECT)
-      set_linear(1, 0, -0.5, 0.5, 0, X);
-    else if (start_rule == B2B_END_TANGENT)
-      set_given(set_tangent(1, 0.5, 1, 2), unit_tangents);
-    else
-      set_direction(set_tangent(1, 0.5, 1, 2), kind, 0, 1, 2);
-    if (kind == B2B_CURVE_LINEAR || end_rule == B2B_END_REFLECT)
-      set_linear(3, 0, -0.5, 0.5, 0, X);
-    else if (end_rule == B2B_END_TANGENT)
-      set_given(set_tangent(3, 0.5, 1, 2), unit_tangents + 3);
-    else
-      set_direction(set_tangent(3, 0.5, 1, 2), kind, 1, 2, 3);
-  } else {  // B2B_CURVE_HERMITE_MIDPOINT, centred on x2
-    const bool first = start_rule != B2B_END_NEIGHBOUR;
-    const bool last = end_rule != B2B_END_NEIGHBOUR;
-    if (first && last) return reject(B2B_ERR_RANGE, -1, -1);
-    if (!first && coincident(X, 0, 1)) return reject(B2B_ERR_COINCIDENT, 0, 1);
-    if (!last && coincident(X, 1, 2)) return reject(B2B_ERR_COINCIDENT, 1, 2);
-    // x1 = x3: the parabola from m12 to m23 = m12 turns back at x2 (a hairpin
-    // whose tangent vanishes at its apex); l13 = 0 is FOLDED (b2b_curve.h).
-    if (!first && !last && coincident(X, 0, 2)) return reject(B2B_ERR_FOLDED, 0, 2);
-    if (first) {  // half element from x2 to the midpoint of x2-x3
-      set_linear(0, 0, 1, 0, 0, X);
-      if (start_rule == B2B_END_TANGENT)
-        set_given(set_tangent(1, 0.25, 1, 2), unit_tangents);
-      else
-        set_linear(1, 0, -0.25, 0.25, 0, X);
-      set_linear(2, 0, 0.5, 0.5, 0, X);
-      set_linear(3, 0, -0.25, 0.25, 0, X);
-    } else if (last) {  // half element from the midpoint of x1-x2 to x2
-      set_linear(0, 0.5, 0.5, 0, 0, X);
-      set_linear(1, -0.25, 0.25, 0, 0, X);
-      set_linear(2, 0, 1, 0, 0, X);
-      if (end_rule == B2B_END_TANGENT)
-        set_given(set_tangent(3, 0.25, 0, 1), unit_tangents + 3);
-      else
-        set_linear(3, -0.25, 0.25, 0, 0, X);
-    } else {  // parabola m12 -> m23 with control point x2
-      set_linear(0, 0.5, 0.5, 0, 0, X);
-      set_linear(1, -0.5, 0.5, 0, 0, X);
-      set_linear(2, 0, 0.5, 0.5, 0, X);
-      set_linear(3, 0, -0.5, 0.5, 0, X);
-    }
+  for (int i = 0; i < 3; ++i) base_[i] = X[3 + i];  // x2, read by every kind
+  Failure f;
+  switch (kind_of(kind)) {
+    case Kind::Linear:
+      linear_kind_ = true;
+      f = build_chord(X);
+      break;
+    case Kind::HermiteMidpoint:
+      f = build_midpoint(start_rule, end_rule, X, unit_tangents);
+      break;
+    case Kind::HermiteNodal:
+      f = build_nodal(TangentTerm::Dir::Chord, start_rule, end_rule, X, unit_tangents);
+      break;
+    case Kind::HermiteNodalWeighted:
+      f = build_nodal(TangentTerm::Dir::Weighted, start_rule, end_rule, X, unit_tangents);
+      break;
   }
+  if (f.status) return f;
 
   for (int k = 1; k < 4; k += 2) {
     Term& t = term_[k];
     if (!t.nonlinear) continue;
-    if (!t.tangent.evaluate(X)) return reject(B2B_ERR_FOLDED, t.tangent.a, t.tangent.c);
+    if (!t.tangent.evaluate(X)) return rejected(B2B_ERR_FOLDED, t.tangent.a, t.tangent.c);
     for (int i = 0; i < 3; ++i) t.value[i] = t.tangent.value[i];
     if (derivatives) t.tangent.jacobian();
   }
   return f;
+}
+
+Failure Segment::build_chord(const double* X) {
+  if (coincident(X, 1, 2)) return rejected(B2B_ERR_COINCIDENT, 1, 2);
+  set_linear(0, 0, 1, 0, 0, X);  // x2
+  set_linear(2, 0, 0, 1, 0, X);  // x3
+  // The chord tangent (x3 - x2)/2 at both ends, whatever the rules.
+  set_linear(1, 0, -0.5, 0.5, 0, X);
+  set_linear(3, 0, -0.5, 0.5, 0, X);
+  return Failure();
+}
+
+Failure Segment::build_nodal(TangentTerm::Dir dir, int start_rule, int end_rule, const double* X,
+                             const double* unit_tangents) {
+  if (coincident(X, 1, 2)) return rejected(B2B_ERR_COINCIDENT, 1, 2);
+  if (start_rule == B2B_END_NEIGHBOUR) {
+    if (coincident(X, 0, 1)) return rejected(B2B_ERR_COINCIDENT, 0, 1);
+    if (coincident(X, 0, 2)) return rejected(B2B_ERR_FOLDED, 0, 2);
+  }
+  if (end_rule == B2B_END_NEIGHBOUR) {
+    if (coincident(X, 2, 3)) return rejected(B2B_ERR_COINCIDENT, 2, 3);
+    if (coincident(X, 1, 3)) return rejected(B2B_ERR_FOLDED, 1, 3);
+  }
+  set_linear(0, 0, 1, 0, 0, X);  // x2
+  set_linear(2, 0, 0, 1, 0, X);  // x3
+  // A reflected ghost gives the chord tangent (x3 - x2)/2.
+  if (start_rule == B2B_END_REFLECT)
+    set_linear(1, 0, -0.5, 0.5, 0, X);
+  else if (start_rule == B2B_END_TANGENT)
+    set_given(set_tangent(1, 0.5, 1, 2), unit_tangents);
+  else
+    set_direction(set_tangent(1, 0.5, 1, 2), dir, 0, 1, 2);
+  if (end_rule == B2B_END_REFLECT)
+    set_linear(3, 0, -0.5, 0.5, 0, X);
+  else if (end_rule == B2B_END_TANGENT)
+    set_given(set_tangent(3, 0.5, 1, 2), unit_tangents + 3);
+  else
+    set_direction(set_tangent(3, 0.5, 1, 2), dir, 1, 2, 3);
+  return Failure();
+}
+
+Failure Segment::build_midpoint(int start_rule, int end_rule, const double* X,
+                                const double* unit_tangents) {
+  // Centred on x2.
+  const bool first = start_rule != B2B_END_NEIGHBOUR;
+  const bool last = end_rule != B2B_END_NEIGHBOUR;
+  if (first && last) return rejected(B2B_ERR_RANGE, -1, -1);
+  if (!first && coincident(X, 0, 1)) return rejected(B2B_ERR_COINCIDENT, 0, 1);
+  if (!last && coincident(X, 1, 2)) return rejected(B2B_ERR_COINCIDENT, 1, 2);
+  // x1 = x3: the parabola from m12 to m23 = m12 turns back at x2 (a hairpin
+  // whose tangent vanishes at its apex); l13 = 0 is FOLDED (b2b_curve.h).
+  if (!first && !last && coincident(X, 0, 2)) return rejected(B2B_ERR_FOLDED, 0, 2);
+  if (first) {  // half element from x2 to the midpoint of x2-x3
+    set_linear(0, 0, 1, 0, 0, X);
+    if (start_rule == B2B_END_TANGENT)
+      set_given(set_tangent(1, 0.25, 1, 2), unit_tangents);
+    else
+      set_linear(1, 0, -0.25, 0.25, 0, X);
+    set_linear(2, 0, 0.5, 0.5, 0, X);
+    set_linear(3, 0, -0.25, 0.25, 0, X);
+  } else if (last) {  // half element from the midpoint of x1-x2 to x2
+    set_linear(0, 0.5, 0.5, 0, 0, X);
+    set_linear(1, -0.25, 0.25, 0, 0, X);
+    set_linear(2, 0, 1, 0, 0, X);
+    if (end_rule == B2B_END_TANGENT)
+      set_given(set_tangent(3, 0.25, 0, 1), unit_tangents + 3);
+    else
+      set_linear(3, -0.25, 0.25, 0, 0, X);
+  } else {  // parabola m12 -> m23 with control point x2
+    set_linear(0, 0.5, 0.5, 0, 0, X);
+    set_linear(1, -0.5, 0.5, 0, 0, X);
+    set_linear(2, 0, 0.5, 0.5, 0, X);
+    set_linear(3, 0, -0.5, 0.5, 0, X);
+  }
+  return Failure();
 }
 
 void Segment::point(double xi, double* x, double* xd, double* xdd) const {
@@ -176,30 +216,29 @@ void Segment::point(double xi, double* x, double* xd, double* xdd) const {
 
 void Segment::point_from(const double* origin, double xi, double* x, double* xd,
                          double* xdd) const {
-  const double* x2 = term_[0].value;
-  const double* x3 = term_[2].value;
+  // x(xi) - origin = (base - origin) + the Hermite sum over the position
+  // terms' offsets and the tangents (the position weights sum to 1 and their
+  // derivatives to 0, so the base comes off whole).
+  const double* p0 = term_[0].offset;
+  const double* p1 = term_[2].offset;
   if (linear_kind_) {  // the chord: no Hermite weights to pay for
     for (int i = 0; i < 3; ++i) {
-      if (x) x[i] = 0.5 * (1.0 - xi) * (x2[i] - origin[i]) + 0.5 * (1.0 + xi) * (x3[i] - origin[i]);
-      if (xd) xd[i] = 0.5 * (x3[i] - x2[i]);
+      if (x) x[i] = (base_[i] - origin[i]) + (0.5 * (1.0 - xi) * p0[i] + 0.5 * (1.0 + xi) * p1[i]);
+      if (xd) xd[i] = 0.5 * (p1[i] - p0[i]);
       if (xdd) xdd[i] = 0.0;
     }
     return;
   }
-  // The position weights h[0] + h[2] sum to 1 (and their derivatives to 0),
-  // so the origin comes off the end points alone; the derivatives, too, are
-  // formed from the offsets, not from two large positions that cancel.
   const HermiteBasis hb(xi);
   for (int i = 0; i < 3; ++i) {
-    const double tv[4] = {x2[i] - origin[i], term_[1].value[i], x3[i] - origin[i],
-                          term_[3].value[i]};
+    const double tv[4] = {p0[i], term_[1].value[i], p1[i], term_[3].value[i]};
     double v = 0, vd = 0, vdd = 0;
     for (int k = 0; k < 4; ++k) {
       v += hb.h[k] * tv[k];
       vd += hb.dh[k] * tv[k];
       vdd += hb.ddh[k] * tv[k];
     }
-    if (x) x[i] = v;
+    if (x) x[i] = (base_[i] - origin[i]) + v;
     if (xd) xd[i] = vd;
     if (xdd) xdd[i] = vdd;
   }

@@ -39,10 +39,11 @@ class Segment {
 
   // x(xi), dx/dxi, d2x/dxi2 (any pointer may be null).
   void point(double xi, double* x, double* xd, double* xdd) const;
-  // x(xi) - origin, formed from the end points' offsets to origin: when the
-  // segments lie far from the coordinates' origin, differences of two such
-  // points keep the accuracy of the inputs (about eps times the patch size,
-  // not eps times the coordinates). dx/dxi, d2x/dxi2 as point().
+  // x(xi) - origin, formed from the positions' offsets to base() and
+  // base() - origin: when the segments lie far from the coordinates' origin
+  // and origin is a node of the pair, differences of two such points keep
+  // the accuracy of the inputs (about eps times the patch size, not eps
+  // times the coordinates). dx/dxi, d2x/dxi2 as point().
   void point_from(const double* origin, double xi, double* x, double* xd, double* xdd) const;
   // P = dx/dX and Pd = d(dx/dxi)/dX, 3x12 column-major each.
   void jacobians(double xi, double* P, double* Pd) const;
@@ -56,6 +57,9 @@ class Segment {
   // below the diagonal are not touched. For a caller that mirrors H.
   void add_contracted_hessian_upper(double xi, const double* w, double s, double* H,
                                     int ld) const;
+  // Node x2, the origin of the offsets point_from works with: the best
+  // origin for a pair's differences (an input, not a rounded midpoint).
+  const double* base() const { return base_; }
   // The end points x(-1) and x(1) (available after build, at no cost).
   const double* start_point() const { return term_[0].value; }
   const double* end_point() const { return term_[2].value; }
@@ -68,12 +72,25 @@ class Segment {
     double coef[4] = {0, 0, 0, 0};  // linear: value = sum_s coef[s] x_s
     TangentTerm tangent;            // nonlinear
     double value[3] = {0, 0, 0};
+    double offset[3] = {0, 0, 0};  // a position term's value minus base_
   };
   // Order of the Hermite weights: start point, start tangent, end point, end tangent.
   Term term_[4];
   bool linear_kind_ = false;
+  // Node x2 (slot 1, read by every kind): the positions are kept as offsets
+  // to it, formed at the size of the patch (see point_from).
+  double base_[3] = {0, 0, 0};
 
   void set_linear(int k, double c0, double c1, double c2, double c3, const double* X);
+  // Term k as a nonlinear end tangent sigma * |x_q - x_p| * (its direction).
+  TangentTerm& set_tangent(int k, double sigma, int p, int q);
+  // The terms of each kind's segment (build); the kind's end tangents at
+  // interior nodes follow `dir` (nodal kinds).
+  Failure build_chord(const double* X);
+  Failure build_nodal(TangentTerm::Dir dir, int start_rule, int end_rule, const double* X,
+                      const double* unit_tangents);
+  Failure build_midpoint(int start_rule, int end_rule, const double* X,
+                         const double* unit_tangents);
   // H += w . (c1 d2T0/dX2 + c3 d2T1/dX2) (the nonlinear end tangents), on
   // the whole 12x12 block or (upper) its upper triangle.
   void add_tangent_hessians(double c1, double c3, const double* w, double* H, int ld,

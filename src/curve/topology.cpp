@@ -2,20 +2,23 @@
 
 #include <b2b/b2b.h>
 
+#include "kinds.hpp"
+
 namespace b2b {
 namespace curve {
 
 int min_nodes(int closed) { return closed ? 3 : 2; }
 
 int segment_count(int kind, int n_nodes, int closed) {
-  if (closed || kind == B2B_CURVE_HERMITE_MIDPOINT) return n_nodes;
+  if (closed || kind_info(kind).centred_on_node) return n_nodes;
   return n_nodes - 1;
 }
 
 void segment_patch(int kind, int n_nodes, int closed, int s, int nodes[4], int* start_rule,
                    int* end_rule) {
-  // Slot x2 holds node s for every kind: nodal and linear segments run from
-  // node s to s + 1 (slots x2, x3), a midpoint segment is centred on node s.
+  // Slot x2 holds node s for every kind: a segment per element runs from
+  // node s to s + 1 (slots x2, x3), one centred on a node is centred on
+  // node s (KindInfo::centred_on_node).
   // 64-bit arithmetic: s + 2 and the wrap-around overflow int for rings of
   // nearly INT_MAX nodes.
   const long long n = n_nodes;
@@ -27,9 +30,11 @@ void segment_patch(int kind, int n_nodes, int closed, int s, int nodes[4], int* 
       node = -1;
     nodes[k] = static_cast<int>(node);
   }
-  // Slots the kind never reads.
-  if (kind == B2B_CURVE_LINEAR) nodes[0] = nodes[3] = -1;
-  if (kind == B2B_CURVE_HERMITE_MIDPOINT) nodes[3] = -1;
+  // Slots the kind never reads, under any rule.
+  const KindInfo& info = kind_info(kind);
+  const unsigned readable = info.slots | info.start_neighbour_slots | info.end_neighbour_slots;
+  for (int slot = 0; slot < 4; ++slot)
+    if (!(readable & (1u << slot))) nodes[slot] = -1;
 
   const int last_segment = segment_count(kind, n_nodes, closed) - 1;
   *start_rule = (!closed && s == 0) ? B2B_END_REFLECT : B2B_END_NEIGHBOUR;

@@ -5,6 +5,7 @@
 
 #include <b2b/b2b.h>
 
+#include "../curve/kinds.hpp"
 #include "../curve/topology.hpp"
 
 namespace b2b {
@@ -83,7 +84,7 @@ void BeamTable::measure_arcs(const std::vector<Beam>& beams, const double* coord
     arc_total_[b] = cum[n];
     for (int s = 0; s < beam.n_segments; ++s) {
       const int g = beam.first_segment + s;
-      if (beam.kind == B2B_CURVE_HERMITE_MIDPOINT) {
+      if (curve::kind_info(beam.kind).centred_on_node) {
         // centred on node s, from the middle of the element before to the
         // middle of the element after (the node itself at an open end)
         double before = 0.0;  // the element before node s (none at an open start)

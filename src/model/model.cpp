@@ -7,6 +7,7 @@
 #include <b2b/b2b.h>
 
 #include "../pair/history.hpp"
+#include "../pair/laws.hpp"
 
 namespace b2b {
 namespace model {
@@ -25,8 +26,7 @@ void Model::set_group_pair(int ga, int gb, const pair::Params& p) {
       if (finalized_) {
         g0_max_ = 0.0;
         for (const GroupPair& h : group_pairs_)
-          if (h.params.law == B2B_LAW_QUADRATIC)
-            g0_max_ = std::max(g0_max_, h.params.regularization_gap);
+          g0_max_ = std::max(g0_max_, pair::contact_start_gap(h.params));
         candidates_.clear();  // boxes depend on g0: search again
         build_coords_.clear();
       }
@@ -88,7 +88,7 @@ Problem Model::finalize(int n_nodes) {
     }
   g0_max_ = 0.0;
   for (const GroupPair& g : group_pairs_)
-    if (g.params.law == B2B_LAW_QUADRATIC) g0_max_ = std::max(g0_max_, g.params.regularization_gap);
+    g0_max_ = std::max(g0_max_, pair::contact_start_gap(g.params));
   table_.build(beams_, dense_group_);
   used_index_.assign(n_nodes, -1);
   used_nodes_.clear();

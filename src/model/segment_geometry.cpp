@@ -5,6 +5,7 @@
 
 #include <b2b/b2b.h>
 
+#include "../curve/kinds.hpp"
 #include "../pair/handover.hpp"
 
 namespace b2b {
@@ -33,17 +34,31 @@ Box segment_box(const SegmentInfo& s, const double* coords, const std::vector<in
     box.lo[i] = HUGE_VAL;
     box.hi[i] = -HUGE_VAL;
   }
-  const bool midpoint = s.kind == B2B_CURVE_HERMITE_MIDPOINT;
+  // A box around the segment's Hermite control polygon (b2b_model.h): the
+  // box of the nodes it reads (all_slots) or of x2 and x3 only, grown by
+  // l23/3 where the control points x2 + T0/3, x3 - T1/3 may leave it.
+  bool all_slots = false, grow_by_third = false;
+  switch (curve::kind_of(s.kind)) {
+    case curve::Kind::Linear:  // the chord x2 -> x3
+      break;
+    case curve::Kind::HermiteMidpoint:  // m12, x2, m23: within the box of x1, x2, x3
+      all_slots = true;
+      break;
+    case curve::Kind::HermiteNodal:
+    case curve::Kind::HermiteNodalWeighted:  // |T0|, |T1| = l23/2
+      grow_by_third = true;
+      break;
+  }
   for (int k = 0; k < 4; ++k) {
     const int node = s.nodes[k];
-    if (node < 0 || (!midpoint && (k == 0 || k == 3))) continue;
+    if (node < 0 || (!all_slots && (k == 0 || k == 3))) continue;
     const double* p = coords + 3 * used_index[node];
     for (int i = 0; i < 3; ++i) {
       box.lo[i] = std::min(box.lo[i], p[i]);
       box.hi[i] = std::max(box.hi[i], p[i]);
     }
   }
-  if (s.kind == B2B_CURVE_HERMITE_NODAL || s.kind == B2B_CURVE_HERMITE_NODAL_WEIGHTED) {
+  if (grow_by_third) {
     const double* p = coords + 3 * used_index[s.nodes[1]];
     const double* q = coords + 3 * used_index[s.nodes[2]];
     const double grow = std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) / 3.0;

@@ -21,6 +21,7 @@
 
 #include "../pair/handover.hpp"
 #include "../pair/history.hpp"
+#include "../pair/laws.hpp"
 #include "model.hpp"
 #include "segment_geometry.hpp"
 
@@ -99,6 +100,7 @@ class Updater {
   Problem evaluate_all();
   Problem handovers();
   Problem overflow(const Item& item) const;
+  Problem totals_overflow() const;
   void finish();
 };
 
@@ -117,6 +119,7 @@ Problem Updater::run() {
   }
   if (!pb.status) pb = evaluate_all();
   if (!pb.status) pb = handovers();
+  if (!pb.status) pb = totals_overflow();
   if (pb.status) {
     if (!had_arcs && m_.table_.arcs_measured()) m_.table_.set_arcs({}, {}, {});
     return pb;
@@ -193,7 +196,7 @@ void Updater::near_pairs() {
   for (const auto& c : cand) {
     const int gp = m_.group_pair_index(c.first, c.second);
     const pair::Params& p = m_.group_pairs_[gp].params;
-    const double g0 = p.law == B2B_LAW_QUADRATIC ? p.regularization_gap : 0.0;
+    const double g0 = pair::contact_start_gap(p);
     const double reach = m_.table_.segment(c.first).radius + m_.table_.segment(c.second).radius +
                          g0 + s;
     if (box_distance(boxes_[c.first], boxes_[c.second]) > reach) continue;
@@ -312,6 +315,24 @@ Problem Updater::overflow(const Item& item) const {
   pb.other_segment = b.index;
   pb.value = m_.group_pairs_[item.gp].params.penalty;
   return pb;
+}
+
+// The stats sum the active contacts' energies, normal forces and
+// dissipations, in finish()'s order. Each is finite (the element checks
+// that), but their sum need not be, and on success every output is (b2b.h):
+// the contact whose term makes a sum overflow is reported as overflowing.
+Problem Updater::totals_overflow() const {
+  double energy = 0.0, force = 0.0, dissipation = 0.0;
+  for (const Item& it : items_) {
+    if (it.res.contact_status != B2B_CONTACT_ACTIVE) continue;
+    energy += it.res.info[B2B_INFO_ENERGY];
+    force += it.res.info[B2B_INFO_NORMAL_FORCE];
+    dissipation += it.res.info[B2B_INFO_DISSIPATION];
+    if (!std::isfinite(energy) || !std::isfinite(force) || !std::isfinite(dissipation) ||
+        !std::isfinite(m_.committed_.dissipation + dissipation))
+      return overflow(it);
+  }
+  return Problem();
 }
 
 Problem Updater::evaluate_all() {

@@ -19,6 +19,9 @@ constexpr double kRelTol = 1e-13;  // tangential residual relative to the axis d
 // A Newton step this small (in the parameters, which run over [-1, 1]) is
 // rounding: 16 ulps of 1.
 constexpr double kStepAtRounding = 16.0 * DBL_EPSILON;
+// The final Newton step after convergence is a correction; anything larger
+// than this (in the parameters) is not, and is not taken.
+constexpr double kPolishMax = 1e-6;
 
 // NaN goes to the middle of the range rather than through.
 double clamp(double v, double lo, double hi) {
@@ -30,7 +33,7 @@ double clamp(double v, double lo, double hi) {
 double half_distance_squared(const curve::Segment& A, const curve::Segment& B, double xi,
                              double eta, double inv_scale) {
   double xa[3], xb[3], d[3];
-  const double* origin = A.start_point();
+  const double* origin = A.base();
   A.point_from(origin, xi, xa, nullptr, nullptr);
   B.point_from(origin, eta, xb, nullptr, nullptr);
   for (int i = 0; i < 3; ++i) d[i] = (xa[i] - xb[i]) * inv_scale;
@@ -63,6 +66,9 @@ void chord_start(const double* a0, const double* a1, const double* b0, const dou
     return;
   }
   const double ct1 = dot3(c, t1), ct2 = dot3(c, t2);
+  // Clamped to the segments: the cubics' extensions may have closest
+  // points of their own, which a start beyond [-1, 1] could find instead of
+  // the segments' one.
   *xi = clamp((ct2 * t12 - ct1 * t22) / D, -1.0, 1.0);
   *eta = clamp((t11 * ct2 - t12 * ct1) / D, -1.0, 1.0);
 }
@@ -73,9 +79,9 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
   const double inv_scale = 1.0 / scale;
   bool newton_at_rounding = false;
   int pinned = 0;  // consecutive iterations held at the box by a step that points out of it
-  // Points relative to A's start: d keeps the inputs' accuracy far from the
+  // Points relative to A's base node: d keeps the inputs' accuracy far from the
   // coordinates' origin (see Segment::point_from).
-  const double* origin = A.start_point();
+  const double* origin = A.base();
   for (int it = 0;; ++it) {
     double xa[3], xad[3], xadd[3], xb[3], xbd[3], xbdd[3], d[3];
     A.point_from(origin, xi, xa, xad, xadd);
@@ -96,20 +102,18 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
     // step test below stops the iteration where rounding takes over).
     const double rho = norm3(d);
     const double tol = std::fmin(tol_length * inv_scale, kRelTol * rho) + 4.0 * DBL_EPSILON * rho;
-    if (std::fabs(g1) <= tol * na && std::fabs(g2) <= tol * nb) {
+    const bool polish = std::fabs(g1) <= tol * na && std::fabs(g2) <= tol * nb;
+    if (polish) {  // converged; one more Newton step below
       r.converged = true;
       r.iterations = it;
-      break;
-    }
-    if (it > 0 && newton_at_rounding) {
+    } else if (it > 0 && newton_at_rounding) {
       // The last step was a plain Newton step (no shift, no line search)
       // of a few ulps of the parameters: the gradient is rounding noise,
       // the iterate as good as the inputs allow.
       r.converged = true;
       r.iterations = it;
       break;
-    }
-    if (it == max_iterations) {
+    } else if (it == max_iterations) {
       r.iterations = it;
       break;
     }
@@ -122,7 +126,12 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
     const double mean = 0.5 * (h11 + h22);
     const double radius = std::sqrt(0.25 * (h11 - h22) * (h11 - h22) + h12 * h12);
     const double lambda_min = mean - radius;
-    const double floor = 1e-6 * hscale;
+    // The shift's floor: small enough that the Hessian of two nearly
+    // parallel segments, whose smallest eigenvalue is about
+    // (1 - cos angle) |a||b|, is not shifted down to 1e-3 rad (1e-6 shifted
+    // every step below 0.1 degree, so a host with "parallel_angle" 0 got
+    // linear convergence and NOT_CONVERGED).
+    const double floor = 1e-13 * hscale;
     const bool shifted = lambda_min < floor;
     if (shifted) {
       h11 += floor - lambda_min;
@@ -131,6 +140,27 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
     const double det = h11 * h22 - h12 * h12;
     double s1 = -(h22 * g1 - h12 * g2) / det;
     double s2 = -(h11 * g2 - h12 * g1) / det;
+    if (polish) {
+      // The test bounds the tangential residual, not the parameters, whose
+      // error grows like 1 / sin^2 of the crossing angle (3e-11 at 1 degree,
+      // found against the AD reference): one more plain Newton step, at
+      // quadratic convergence, takes it to rounding. Not counted.
+      if (!shifted && std::fabs(s1) <= kPolishMax && std::fabs(s2) <= kPolishMax) {
+        xi += s1;
+        eta += s2;
+      }
+      break;
+    }
+    // At the box's edge with phi still decreasing outwards, a parameter is
+    // held there and the other takes its own Newton step (a projected
+    // Newton step; h11, h22 > 0 after the shift): a step into the wall would
+    // make the line search halve it for nothing, up to 40 times.
+    const bool wall1 = (xi >= kBox && g1 < 0.0) || (xi <= -kBox && g1 > 0.0);
+    const bool wall2 = (eta >= kBox && g2 < 0.0) || (eta <= -kBox && g2 > 0.0);
+    if (wall1 || wall2) {
+      s1 = wall1 ? 0.0 : -g1 / h11;
+      s2 = wall2 ? 0.0 : -g2 / h22;
+    }
     const double m = std::fmax(std::fabs(s1), std::fabs(s2));
     if (m > kMaxStep) {
       s1 *= kMaxStep / m;
@@ -151,15 +181,16 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
         alpha *= 0.5;
       }
     }
-    newton_at_rounding = !shifted && alpha == 1.0 && m <= kStepAtRounding;
+    newton_at_rounding = !shifted && !wall1 && !wall2 && alpha == 1.0 && m <= kStepAtRounding;
     const double xi_free = xi + alpha * s1, eta_free = eta + alpha * s2;
     xi = clamp(xi_free, -kBox, kBox);
     eta = clamp(eta_free, -kBox, kBox);
-    // An iterate the box holds back twice in a row, both times with phi
-    // still decreasing outwards, is after a closest point beyond the box,
-    // well off this pair's segments: the search stops there (the caller
-    // reports OUTSIDE) instead of spending every iteration at the wall.
-    pinned = (xi != xi_free || eta != eta_free) ? pinned + 1 : 0;
+    // An iterate the box holds back (or holds at its edge) twice in a row,
+    // both times with phi still decreasing outwards, is after a closest
+    // point beyond the box, well off this pair's segments: the search stops
+    // there (the caller reports OUTSIDE) instead of spending every iteration
+    // at the wall.
+    pinned = (wall1 || wall2 || xi != xi_free || eta != eta_free) ? pinned + 1 : 0;
     if (pinned >= 2) {
       r.iterations = it + 1;
       break;

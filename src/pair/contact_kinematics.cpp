@@ -44,15 +44,14 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
   const double len_a = norm3(t);
   sub3(b1, b0, t);
   const double len_b = norm3(t);
-  // The algebra works relative to A's start point (Segment::point_from), so
+  // The algebra works relative to A's base node (Segment::point_from), so
   // rounding scales with the patch's extent, not with the coordinates.
-  double rel[3];
-  sub3(b0, a0, rel);
-  double extent = max_abs3(rel);
-  sub3(b1, a0, rel);
-  extent = std::fmax(extent, max_abs3(rel));
-  sub3(a1, a0, rel);
-  extent = std::fmax(extent, max_abs3(rel));
+  const double* origin = sa.base();
+  double extent = 0.0, rel[3];
+  for (const double* p : {a0, a1, b0, b1}) {
+    sub3(p, origin, rel);
+    extent = std::fmax(extent, max_abs3(rel));
+  }
   const double tol_length = 1e-13 * (len_a + len_b) + 64.0 * DBL_EPSILON * extent;
   // The length unit of the closest-point algebra below: products of four
   // lengths (the Hessian's determinant) stay in range for any coordinates.
@@ -78,18 +77,36 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
   info[B2B_INFO_ETA] = cp.eta;
   info[B2B_INFO_ITERATIONS] = cp.iterations;
   if (!cp.converged) {
-    // An iteration that ran off the segment looked for a point that is not
-    // this pair's; otherwise the search failed.
+    // First the (nearly) singular problems, which is why a search does not
+    // converge: axes within "parallel_angle" of each other where it stopped,
+    // or a centreline that (almost) stops there, a cusp, near which Newton
+    // converges only linearly (speed below 1% of the chord's, i.e. of a
+    // straight segment's). Both are PARALLEL, as b2b_pair.h says, not a
+    // failed search; checked before OUTSIDE, since such a search may also
+    // wander off along the axes. Otherwise an iteration that ran off the
+    // segment looked for a point that is not this pair's, and else the
+    // search failed.
+    double da[3], db[3], c[3];
+    sa.point(cp.xi, nullptr, da, nullptr);
+    sb.point(cp.eta, nullptr, db, nullptr);
+    cross3(da, db, c);
+    const double sa_speed = norm3(da), sb_speed = norm3(db), speeds = sa_speed * sb_speed;
+    const bool cusp = !(sa_speed > 0.005 * len_a) || !(sb_speed > 0.005 * len_b);
+    if (cusp || !(norm3(c) > params.sin_parallel_angle * speeds)) {
+      info[B2B_INFO_ANGLE] =
+          speeds > 0.0 ? std::asin(std::fmin(1.0, norm3(c) / speeds)) * 180.0 / kPi : 0.0;
+      return B2B_CONTACT_PARALLEL;
+    }
     const bool ran_off = std::fabs(cp.xi) > 1.0 || std::fabs(cp.eta) > 1.0;
     return ran_off ? B2B_CONTACT_OUTSIDE : B2B_CONTACT_NOT_CONVERGED;
   }
   // Positions (reported) from the coordinates; d and the derivatives from
-  // the offsets to A's start (Segment::point_from), accurate far from the
+  // the offsets to A's base node (Segment::point_from), accurate far from the
   // coordinates' origin.
   PointState &pa = k.pa, &pb = k.pb;
   double ra[3], rb[3];
-  sa.point_from(a0, k.xi, ra, pa.xd, pa.xdd);
-  sb.point_from(a0, k.eta, rb, pb.xd, pb.xdd);
+  sa.point_from(origin, k.xi, ra, pa.xd, pa.xdd);
+  sb.point_from(origin, k.eta, rb, pb.xd, pb.xdd);
   sa.point(k.xi, pa.x, nullptr, nullptr);
   sb.point(k.eta, pb.x, nullptr, nullptr);
   for (int i = 0; i < 3; ++i) {
@@ -109,9 +126,11 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     du[i] = k.d[i] * inv_unit;
   }
   const double na = norm3(ta), nb = norm3(tb);
-  if (!(na > 0.0 && nb > 0.0)) {
-    // A cusp: the centreline stops and turns back at the closest point, so
-    // there is neither a crossing angle nor a unique normal (b2b_pair.h).
+  if (!(na * unit > 0.005 * len_a) || !(nb * unit > 0.005 * len_b)) {
+    // A cusp: the centreline stops and turns back at (or next to: speed
+    // below 1% of its chord's) the closest point, so there is neither a
+    // crossing angle nor a unique normal (b2b_pair.h); the point itself is
+    // found only to sqrt(eps) there, and the tangent would be meaningless.
     info[B2B_INFO_ANGLE] = 0.0;
     return B2B_CONTACT_PARALLEL;
   }
@@ -138,7 +157,20 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
   } else {
     const double sign = (has_normal && dot3(k.d, hist_old + kHistNormal) < 0.0) ? -1.0 : 1.0;
     k.rho_signed = sign * rho;
-    for (int i = 0; i < 3; ++i) k.n[i] = k.d[i] / k.rho_signed;
+    // At the closest points d is orthogonal to both tangents, so d / rho is
+    // the unit a x b (oriented along d). The two differ in rounding only:
+    // d / rho by about eps (patch) / rho, a x b / |a x b| by eps / sin angle.
+    // Near intersecting axes the cross product is the accurate one, and the
+    // tangent needs it: its (f / rho) (J^T (I - n n^T) J - B^T H^-1 B) is a
+    // difference of two O(1) terms that cancel to O(rho), so an error in n
+    // came back multiplied by L / rho twice (relative error 150 at 1e-10 L,
+    // found by the extremes suite against a long-double reference).
+    if (rho < unit * sin_angle) {
+      const double c = norm3(cr) * (dot3(k.d, cr) < 0.0 ? -1.0 : 1.0);
+      for (int i = 0; i < 3; ++i) k.n[i] = sign * cr[i] / c;
+    } else {
+      for (int i = 0; i < 3; ++i) k.n[i] = k.d[i] / k.rho_signed;
+    }
     k.gap = k.rho_signed - A.radius - B.radius;
   }
   for (int i = 0; i < 3; ++i) info[B2B_INFO_NORMAL + i] = k.n[i];

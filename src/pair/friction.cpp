@@ -26,8 +26,8 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   fr.committed_e2 = hist_old[kHistForceE2];
   fr.xi_n = hist_old[kHistXi];
   fr.eta_n = hist_old[kHistEta];
-  double xa[3], xb[3];  // relative to A's start: accurate far from the origin
-  const double* origin = c.sa->start_point();
+  double xa[3], xb[3];  // relative to A's base node: accurate far from the origin
+  const double* origin = c.sa->base();
   c.sa->point_from(origin, fr.xi_n, xa, nullptr, nullptr);
   c.sb->point_from(origin, fr.eta_n, xb, nullptr, nullptr);
   for (int i = 0; i < 3; ++i) fr.anchor_gap[i] = xa[i] - xb[i];

@@ -14,9 +14,9 @@ HandoverResult handover_history(const curve::Segment& from, const curve::Segment
   // The joint: from's end and to's start (direction +1), or the reverse.
   const double t_from = direction > 0 ? 1.0 : -1.0, t_to = -t_from;
   double xf[3], df[3], xt[3], dt[3], chord[3], gap[3];
-  // Relative to from's start: far from the coordinates' origin the joint's
+  // Relative to from's base node: far from the coordinates' origin the joint's
   // mismatch is then the inputs' rounding of the segments, not of 1e8.
-  const double* origin = from.start_point();
+  const double* origin = from.base();
   from.point_from(origin, t_from, xf, df, nullptr);
   to.point_from(origin, t_to, xt, dt, nullptr);
   curve::sub3(xf, xt, gap);

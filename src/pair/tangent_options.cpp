@@ -22,8 +22,11 @@ void main_term(double slope, const double* PA, const double* PB, const double* n
     G[c] = curve::dot3(PA + 3 * c, n);
     G[12 + c] = -curve::dot3(PB + 3 * c, n);
   }
+  // G[r] * G[c] first: a product of two factors is the same both ways
+  // round, so K is exactly symmetric, as info[B2B_INFO_SYMMETRIC] = 1 says
+  // ((-slope * G[r]) * G[c] rounds differently from (-slope * G[c]) * G[r]).
   for (int c = 0; c < kNdof; ++c)
-    for (int r = 0; r < kNdof; ++r) K[r + kNdof * c] = -slope * G[r] * G[c];
+    for (int r = 0; r < kNdof; ++r) K[r + kNdof * c] = -slope * (G[r] * G[c]);
 }
 
 void fd_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,

@@ -3,11 +3,31 @@
 // the residual. The exact one is tangent_assembly.hpp's.
 #pragma once
 
+#include <b2b/b2b.h>
+
+#include "../common/enumeration.hpp"
 #include "contact_kinematics.hpp"
 #include "params.hpp"
 
 namespace b2b {
 namespace pair {
+
+// The values of the "tangent" option, in value order (what its check and
+// message read, src/capi/capi_params.cpp).
+struct TangentModeInfo {
+  int value;
+  const char* name;
+};
+
+inline constexpr TangentModeInfo kTangentModes[] = {
+    {B2B_NAMED(B2B_TANGENT_EXACT)},
+    {B2B_NAMED(B2B_TANGENT_SYMMETRIC)},
+    {B2B_NAMED(B2B_TANGENT_MAIN)},
+    {B2B_NAMED(B2B_TANGENT_FD)},
+};
+static_assert(in_value_order(kTangentModes), "kTangentModes lists B2B_TANGENT_* in value order");
+
+inline constexpr Enumeration kTangentModeEnumeration = enumeration_of(kTangentModes);
 
 // K = (K + K^T) / 2 (24 x 24, leading dimension 24).
 void symmetrize(double* K);

@@ -164,7 +164,20 @@ START_TEST(test_curve_enum_values) {
   ck_assert_int_eq(B2B_END_NEIGHBOUR, 0);
   ck_assert_int_eq(B2B_END_REFLECT, 1);
   ck_assert_int_eq(B2B_END_TANGENT, 2);
-  for (int k = 0; k < 4; ++k) ck_assert_int_eq(tst_kinds[k], k);
+  /* Kinds are appended: the count only grows past the last fixed value. */
+  ck_assert_int_ge(B2B_CURVE_KIND_COUNT, B2B_CURVE_HERMITE_NODAL_WEIGHTED + 1);
+}
+END_TEST
+
+START_TEST(test_pair_enum_values) {
+  ck_assert_int_eq(B2B_LAW_LINEAR, 0);
+  ck_assert_int_eq(B2B_LAW_QUADRATIC, 1);
+  /* Laws are appended: the count only grows past the last fixed value. */
+  ck_assert_int_ge(B2B_LAW_COUNT, B2B_LAW_QUADRATIC + 1);
+  ck_assert_int_eq(B2B_TANGENT_EXACT, 0);
+  ck_assert_int_eq(B2B_TANGENT_SYMMETRIC, 1);
+  ck_assert_int_eq(B2B_TANGENT_MAIN, 2);
+  ck_assert_int_eq(B2B_TANGENT_FD, 3);
 }
 END_TEST
 
@@ -204,6 +217,7 @@ static Suite *make_suite(void) {
   tc = tcase_create("fixed_values");
   tcase_add_test(tc, test_status_values);
   tcase_add_test(tc, test_curve_enum_values);
+  tcase_add_test(tc, test_pair_enum_values);
   tcase_add_test(tc, test_constants);
   suite_add_tcase(s, tc);
 

@@ -45,26 +45,30 @@ static const char *rule_name(int r) {
   }
 }
 
-static int is_nodal(int kind) { return kind == NOD || kind == NDW; }
+static int is_chord(int kind) { return tst_kind_family(kind) == TST_CHORD; }
+static int is_centred(int kind) { return tst_kind_family(kind) == TST_CENTRED; }
+static int is_nodal(int kind) { return tst_kind_family(kind) == TST_NODAL; }
 
-/* A midpoint segment cannot be both ends of its beam (documented RANGE). */
+/* A segment centred on a node (midpoint) cannot be both ends of its beam
+ * (documented RANGE). */
 static int valid_rules(int kind, int sr, int er) {
-  return !(kind == MID && sr != NB && er != NB);
+  return !(is_centred(kind) && sr != NB && er != NB);
 }
 
 /* The slots a kind reads, straight from the table in <b2b/b2b_curve.h>
  * (bit k: slot x(k+1)). */
 static unsigned used_slots(int kind, int sr, int er) {
-  switch (kind) {
-    case LIN: return 0x6u;
-    case MID: return 0x2u | (sr == NB ? 0x1u : 0u) | (er == NB ? 0x4u : 0u);
-    default: return 0x6u | (sr == NB ? 0x1u : 0u) | (er == NB ? 0x8u : 0u);
+  switch (tst_kind_family(kind)) {
+    case TST_CHORD: return 0x6u;
+    case TST_CENTRED: return 0x2u | (sr == NB ? 0x1u : 0u) | (er == NB ? 0x4u : 0u);
+    case TST_NODAL: return 0x6u | (sr == NB ? 0x1u : 0u) | (er == NB ? 0x8u : 0u);
   }
+  return 0u;
 }
 
 /* The tangent of the first/last node comes from end_tangents. */
-static int start_tangent_in_force(int kind, int sr) { return kind != LIN && sr == TG; }
-static int end_tangent_in_force(int kind, int er) { return kind != LIN && er == TG; }
+static int start_tangent_in_force(int kind, int sr) { return !is_chord(kind) && sr == TG; }
+static int end_tangent_in_force(int kind, int er) { return !is_chord(kind) && er == TG; }
 
 /* A smooth, gently curved patch with elements of length about 1. */
 static void base_patch(double p[12]) {
@@ -205,7 +209,7 @@ START_TEST(test_nonfinite_coordinate) {
   const int kind = _i;
   const double bad[3] = {NAN, INFINITY, -INFINITY};
   const int n_cases = bad_coordinate_cases(kind, bad, 3, B2B_ERR_NONFINITE, "finite");
-  ck_assert_int_ge(n_cases, kind == LIN ? 9 * 2 * 9 : 9 * 2 * 3);
+  ck_assert_int_ge(n_cases, is_chord(kind) ? 9 * 2 * 9 : 9 * 2 * 3);
 }
 END_TEST
 
@@ -259,7 +263,7 @@ START_TEST(test_unused_slots_not_read) {
     }
   /* Linear: x1, x4 in all 9 rule combinations; midpoint: x4 always, plus one
    * of x1/x3 at a beam end; nodal: x1 and/or x4 at beam ends. */
-  const int want = kind == LIN ? 18 : kind == MID ? 5 + 4 : 12;
+  const int want = is_chord(kind) ? 18 : is_centred(kind) ? 5 + 4 : 12;
   ck_assert_int_eq(n_unused, want);
 }
 END_TEST
@@ -279,7 +283,7 @@ START_TEST(test_coincident_nodes) {
       memcpy(p, p0, sizeof p);
       copy_node(p, 2, 1);
       CTX("%s (%s, %s): x3 == x2", tst_kind_name(kind), rule_name(sr), rule_name(er));
-      if (kind == MID && er != NB)
+      if (is_centred(kind) && er != NB)
         expect_ok(ctx, kind, sr, er, p, good_tangents, XI0, &o);
       else
         expect_fail(ctx, kind, sr, er, p, good_tangents, XI0, B2B_ERR_COINCIDENT, 0, "x2", "x3",
@@ -288,7 +292,7 @@ START_TEST(test_coincident_nodes) {
       memcpy(p, p0, sizeof p);
       copy_node(p, 0, 1);
       CTX("%s (%s, %s): x1 == x2", tst_kind_name(kind), rule_name(sr), rule_name(er));
-      if (kind != LIN && sr == NB)
+      if (!is_chord(kind) && sr == NB)
         expect_fail(ctx, kind, sr, er, p, good_tangents, XI0, B2B_ERR_COINCIDENT, 0, "x1", "x2",
                     "coincide");
       else
@@ -339,7 +343,7 @@ START_TEST(test_coincident_up_to_rounding) {
     expect_fail(ctx, kind, sr, er, p, NULL, XI0, B2B_ERR_COINCIDENT, 0, "x2", "x3", "coincide");
   }
 
-  if (kind != LIN) {
+  if (!is_chord(kind)) {
     memcpy(p, p0, sizeof p);
     for (int i = 0; i < 3; ++i) p[i] = p[3 + i] * (1.0 + 1e-17);
     CTX("%s: x1 = x2 (1 + 1e-17) at 1e6", tst_kind_name(kind));
@@ -353,7 +357,7 @@ START_TEST(test_coincident_up_to_rounding) {
   }
 
   /* A short but resolved element at 1e6 is fine (linear: only x2, x3 matter). */
-  if (kind == LIN) {
+  if (is_chord(kind)) {
     memcpy(p, p0, sizeof p);
     for (int i = 0; i < 3; ++i) p[6 + i] = p[3 + i];
     p[6] += 1.0e-4;
@@ -373,7 +377,8 @@ END_TEST
 
 /* x1 == x3 (no tangent direction at x2) or x2 == x4 (none at x3). */
 START_TEST(test_folded_patch) {
-  const int kind = _i; /* the nodal kinds */
+  const int kind = _i;
+  if (!is_nodal(kind)) return; /* their tangent at x2 has the direction of x3 - x1 */
   double p0[12];
   base_patch(p0);
   char ctx[256];
@@ -422,7 +427,8 @@ END_TEST
 /* A fold up to rounding (coordinates ~1e6, x1 one ulp from x3, x4 one ulp
  * from x2) is a fold: the tangent's direction would be rounding noise. */
 START_TEST(test_folded_up_to_rounding) {
-  const int kind = _i; /* the nodal kinds */
+  const int kind = _i;
+  if (!is_nodal(kind)) return; /* as test_folded_patch */
   double p0[12];
   base_patch(p0);
   for (int k = 0; k < 12; ++k) p0[k] += 1.0e6;
@@ -444,7 +450,8 @@ END_TEST
 /* Sharply but not fully folded (x1 a thousandth of an element from x3, x4 as
  * near x2): still a valid patch with finite outputs. */
 START_TEST(test_nearly_folded_patch) {
-  const int kind = _i; /* the nodal kinds */
+  const int kind = _i;
+  if (!is_nodal(kind)) return; /* as test_folded_patch */
   double p0[12];
   base_patch(p0);
   const double h = node_dist(p0, 1, 2);
@@ -474,7 +481,7 @@ END_TEST
 /* ================================================ kinds, rules, NULLs */
 
 START_TEST(test_unknown_kind) {
-  const int bad[] = {-1, 4, 1000, INT_MIN, INT_MAX};
+  const int bad[] = {-1, B2B_CURVE_KIND_COUNT, 1000, INT_MIN, INT_MAX};
   double p[12];
   base_patch(p);
   char ctx[256], num[32];
@@ -546,7 +553,7 @@ START_TEST(test_null_end_tangents) {
         expect_ok(ctx, kind, sr, er, p, NULL, XI0, &o);
       }
     }
-  ck_assert_int_eq(n_fail, kind == LIN ? 0 : kind == MID ? 2 : 5);
+  ck_assert_int_eq(n_fail, is_chord(kind) ? 0 : is_centred(kind) ? 2 : 5);
 }
 END_TEST
 
@@ -612,7 +619,8 @@ END_TEST
 /* Only the direction of a host tangent is used: any non-zero finite length,
  * from the smallest subnormal to DBL_MAX, gives the same segment. */
 START_TEST(test_end_tangent_any_length) {
-  const int kind = _i; /* the kinds that read host tangents */
+  const int kind = _i;
+  if (is_chord(kind)) return; /* the chord reads no host tangent */
   const double scales[] = {4.9406564584124654e-324, 1e-300, 1e-10, 1e10, 1e300, DBL_MAX};
   double p[12];
   base_patch(p);
@@ -730,7 +738,7 @@ START_TEST(test_xi_overflow) {
       if (!valid_rules(kind, sr, er)) continue;
       for (size_t j = 0; j < sizeof xis / sizeof xis[0]; ++j) {
         CTX("%s (%s, %s): xi = %g", tst_kind_name(kind), rule_name(sr), rule_name(er), xis[j]);
-        if (kind == LIN) {
+        if (is_chord(kind)) {
           /* The chord and its derivatives stay finite at 1e200 (they grow
            * like xi, not xi^3); DBL_MAX is left to the all-or-nothing test. */
           if (fabs(xis[j]) < DBL_MAX) {
@@ -865,24 +873,23 @@ END_TEST
 
 /* ============================================================ ends */
 
-/* A midpoint segment that both starts and ends its beam does not exist. */
+/* A segment centred on a node (midpoint) that both starts and ends its beam
+ * does not exist; one segment that is both ends is fine for the other kinds. */
 START_TEST(test_midpoint_both_ends) {
   double p[12];
   base_patch(p);
   char ctx[256];
   outputs o;
   for (int sr = RF; sr <= TG; ++sr)
-    for (int er = RF; er <= TG; ++er) {
-      CTX("hermite-midpoint (%s, %s)", rule_name(sr), rule_name(er));
-      expect_fail(ctx, MID, sr, er, p, good_tangents, XI0, B2B_ERR_RANGE, 0, "midpoint", "both",
-                  NULL);
-      /* One segment that is both ends is fine for the other kinds. */
-      for (int k = 0; k < 4; ++k) {
-        if (tst_kinds[k] == MID) continue;
-        CTX("%s (%s, %s)", tst_kind_name(tst_kinds[k]), rule_name(sr), rule_name(er));
-        expect_ok(ctx, tst_kinds[k], sr, er, p, good_tangents, XI0, &o);
+    for (int er = RF; er <= TG; ++er)
+      for (int kind = 0; kind < B2B_CURVE_KIND_COUNT; ++kind) {
+        CTX("%s (%s, %s)", tst_kind_name(kind), rule_name(sr), rule_name(er));
+        if (is_centred(kind))
+          expect_fail(ctx, kind, sr, er, p, good_tangents, XI0, B2B_ERR_RANGE, 0, "centred",
+                      "both", NULL);
+        else
+          expect_ok(ctx, kind, sr, er, p, good_tangents, XI0, &o);
       }
-    }
 }
 END_TEST
 
@@ -1090,7 +1097,7 @@ START_TEST(test_count_bad_input) {
     CTX("%s: n_segments NULL", tst_kind_name(kind));
     expect_count_fail(ctx, kind, 5, closed, 1, B2B_ERR_NULL, "n_segments", "NULL");
   }
-  const int bad_kinds[] = {-1, 4, 1000};
+  const int bad_kinds[] = {-1, B2B_CURVE_KIND_COUNT, 1000};
   for (size_t k = 0; k < 3; ++k) {
     snprintf(num, sizeof num, "%d", bad_kinds[k]);
     CTX("count: kind %d", bad_kinds[k]);
@@ -1122,7 +1129,7 @@ START_TEST(test_patch_bad_input) {
     CTX("%s: NULL outputs (mask %d)", tst_kind_name(kind), mask);
     expect_patch_fail(ctx, kind, 5, 0, 1, mask, B2B_ERR_NULL, which, "NULL");
   }
-  const int bad_kinds[] = {-1, 4, 1000};
+  const int bad_kinds[] = {-1, B2B_CURVE_KIND_COUNT, 1000};
   for (size_t k = 0; k < 3; ++k) {
     snprintf(num, sizeof num, "%d", bad_kinds[k]);
     CTX("patch: kind %d", bad_kinds[k]);
@@ -1168,37 +1175,37 @@ static Suite *make_suite(void) {
   tcase_add_loop_test(tc, fn, lo, hi); \
   suite_add_tcase(s, tc)
 
-  /* b2b_segment_eval: loop index = curve kind (the nodal kinds are 2, 3). */
-  TC("nonfinite_coordinate", test_nonfinite_coordinate, 0, 4);
-  TC("unused_slots_not_read", test_unused_slots_not_read, 0, 4);
-  TC("coincident_nodes", test_coincident_nodes, 0, 4);
-  TC("coincident_up_to_rounding", test_coincident_up_to_rounding, 0, 4);
-  TC("folded_patch", test_folded_patch, NOD, NDW + 1);
-  TC("folded_up_to_rounding", test_folded_up_to_rounding, NOD, NDW + 1);
-  TC("nearly_folded_patch", test_nearly_folded_patch, NOD, NDW + 1);
+  /* b2b_segment_eval: loop index = curve kind. */
+  TC("nonfinite_coordinate", test_nonfinite_coordinate, 0, B2B_CURVE_KIND_COUNT);
+  TC("unused_slots_not_read", test_unused_slots_not_read, 0, B2B_CURVE_KIND_COUNT);
+  TC("coincident_nodes", test_coincident_nodes, 0, B2B_CURVE_KIND_COUNT);
+  TC("coincident_up_to_rounding", test_coincident_up_to_rounding, 0, B2B_CURVE_KIND_COUNT);
+  TC("folded_patch", test_folded_patch, 0, B2B_CURVE_KIND_COUNT);
+  TC("folded_up_to_rounding", test_folded_up_to_rounding, 0, B2B_CURVE_KIND_COUNT);
+  TC("nearly_folded_patch", test_nearly_folded_patch, 0, B2B_CURVE_KIND_COUNT);
   TC("unknown_kind", test_unknown_kind, 0, 1);
-  TC("unknown_rule", test_unknown_rule, 0, 4);
-  TC("null_patch", test_null_patch, 0, 4);
-  TC("null_end_tangents", test_null_end_tangents, 0, 4);
-  TC("zero_end_tangent", test_zero_end_tangent, 0, 4);
-  TC("nonfinite_end_tangent", test_nonfinite_end_tangent, 0, 4);
-  TC("end_tangent_any_length", test_end_tangent_any_length, MID, NDW + 1);
-  TC("nonfinite_xi", test_nonfinite_xi, 0, 4);
-  TC("xi_outside_segment", test_xi_outside_segment, 0, 4);
-  TC("xi_overflow", test_xi_overflow, 0, 4);
-  TC("xi_overflow_all_or_nothing", test_xi_overflow_all_or_nothing, 0, 4);
-  TC("coordinate_beyond_max", test_coordinate_beyond_max, 0, 4);
-  TC("coordinate_at_max", test_coordinate_at_max, 0, 4);
-  TC("extreme_scales", test_extreme_scales, 0, 4);
+  TC("unknown_rule", test_unknown_rule, 0, B2B_CURVE_KIND_COUNT);
+  TC("null_patch", test_null_patch, 0, B2B_CURVE_KIND_COUNT);
+  TC("null_end_tangents", test_null_end_tangents, 0, B2B_CURVE_KIND_COUNT);
+  TC("zero_end_tangent", test_zero_end_tangent, 0, B2B_CURVE_KIND_COUNT);
+  TC("nonfinite_end_tangent", test_nonfinite_end_tangent, 0, B2B_CURVE_KIND_COUNT);
+  TC("end_tangent_any_length", test_end_tangent_any_length, 0, B2B_CURVE_KIND_COUNT);
+  TC("nonfinite_xi", test_nonfinite_xi, 0, B2B_CURVE_KIND_COUNT);
+  TC("xi_outside_segment", test_xi_outside_segment, 0, B2B_CURVE_KIND_COUNT);
+  TC("xi_overflow", test_xi_overflow, 0, B2B_CURVE_KIND_COUNT);
+  TC("xi_overflow_all_or_nothing", test_xi_overflow_all_or_nothing, 0, B2B_CURVE_KIND_COUNT);
+  TC("coordinate_beyond_max", test_coordinate_beyond_max, 0, B2B_CURVE_KIND_COUNT);
+  TC("coordinate_at_max", test_coordinate_at_max, 0, B2B_CURVE_KIND_COUNT);
+  TC("extreme_scales", test_extreme_scales, 0, B2B_CURVE_KIND_COUNT);
   TC("midpoint_both_ends", test_midpoint_both_ends, 0, 1);
   /* Messages: loop index = one of bad_calls[]. */
   TC("errmsg_null", test_errmsg_null, 0, N_BAD_CALLS);
   TC("errmsg_truncated", test_errmsg_truncated, 0, N_BAD_CALLS);
   TC("errmsg_distinct", test_errmsg_distinct, 0, 1);
-  TC("success_leaves_errmsg", test_success_leaves_errmsg, 0, 4);
+  TC("success_leaves_errmsg", test_success_leaves_errmsg, 0, B2B_CURVE_KIND_COUNT);
   /* Beam topology. */
-  TC("count_bad_input", test_count_bad_input, 0, 4);
-  TC("patch_bad_input", test_patch_bad_input, 0, 4);
+  TC("count_bad_input", test_count_bad_input, 0, B2B_CURVE_KIND_COUNT);
+  TC("patch_bad_input", test_patch_bad_input, 0, B2B_CURVE_KIND_COUNT);
 #undef TC
   return s;
 }

@@ -31,30 +31,26 @@ static void expect_order(int kind, int alternating, double expected) {
                 tst_kind_name(kind), alternating ? "alternating" : "uniform", p, expected);
 }
 
-START_TEST(linear_second_order) {
-  expect_order(B2B_CURVE_LINEAR, 0, 2.0);
-  expect_order(B2B_CURVE_LINEAR, 1, 2.0);
+/* The orders on a circle, uniform and alternating mesh, for every kind (the
+ * README's table). Litewka's node-preserving method (doc/curves.md section
+ * 3.3) is fourth order on a uniform mesh only: on non-uniform ones the
+ * central chord x3 - x1 is not the tangent (doc/curves.md section 6). */
+static void expected_orders(int kind, double *uniform, double *alternating) {
+  switch (kind) {
+    case B2B_CURVE_LINEAR: *uniform = 2.0, *alternating = 2.0; return;
+    case B2B_CURVE_HERMITE_MIDPOINT: *uniform = 2.0, *alternating = 2.0; return;
+    case B2B_CURVE_HERMITE_NODAL: *uniform = 4.0, *alternating = 2.0; return;
+    case B2B_CURVE_HERMITE_NODAL_WEIGHTED: *uniform = 4.0, *alternating = 4.0; return;
+    default: tst_no_expectation("expected_orders", kind); *uniform = *alternating = 0.0;
+  }
 }
-END_TEST
 
-START_TEST(midpoint_second_order) {
-  expect_order(B2B_CURVE_HERMITE_MIDPOINT, 0, 2.0);
-  expect_order(B2B_CURVE_HERMITE_MIDPOINT, 1, 2.0);
-}
-END_TEST
-
-/* Litewka's node-preserving method (doc/curves.md section 3.3) is fourth
- * order on a circle (uniform mesh) only: on non-uniform ones the central
- * chord x3 - x1 is not the tangent (doc/curves.md section 6). */
-START_TEST(nodal_fourth_order_uniform_second_order_alternating) {
-  expect_order(B2B_CURVE_HERMITE_NODAL, 0, 4.0);
-  expect_order(B2B_CURVE_HERMITE_NODAL, 1, 2.0);
-}
-END_TEST
-
-START_TEST(nodal_weighted_fourth_order_both) {
-  expect_order(B2B_CURVE_HERMITE_NODAL_WEIGHTED, 0, 4.0);
-  expect_order(B2B_CURVE_HERMITE_NODAL_WEIGHTED, 1, 4.0);
+/* Loop index: the curve kind. */
+START_TEST(order_on_the_circle) {
+  double uniform, alternating;
+  expected_orders(_i, &uniform, &alternating);
+  expect_order(_i, 0, uniform);
+  expect_order(_i, 1, alternating);
 }
 END_TEST
 
@@ -75,10 +71,7 @@ static Suite *make_suite(void) {
   Suite *s = suite_create("curve_convergence");
   TCase *tc = tcase_create("circle");
   tcase_set_timeout(tc, 300);
-  tcase_add_test(tc, linear_second_order);
-  tcase_add_test(tc, midpoint_second_order);
-  tcase_add_test(tc, nodal_fourth_order_uniform_second_order_alternating);
-  tcase_add_test(tc, nodal_weighted_fourth_order_both);
+  tcase_add_loop_test(tc, order_on_the_circle, 0, B2B_CURVE_KIND_COUNT);
   tcase_add_test(tc, linear_error_is_the_sagitta);
   suite_add_tcase(s, tc);
   return s;

@@ -20,14 +20,15 @@ typedef struct {
   int start_rule, end_rule;
 } rules_t;
 
-/* Rule combinations that make sense for a kind (a midpoint segment cannot be
- * both the first and the last of its beam). */
+/* Rule combinations that make sense for a kind (a segment centred on a node,
+ * the midpoint kind's, cannot be both the first and the last of its beam). */
 static int rule_sets(int kind, rules_t *out) {
   const int n = B2B_END_TANGENT + 1;
   int count = 0;
   for (int s = 0; s < n; ++s)
     for (int e = 0; e < n; ++e) {
-      if (kind == B2B_CURVE_HERMITE_MIDPOINT && s != B2B_END_NEIGHBOUR && e != B2B_END_NEIGHBOUR)
+      if (tst_kind_family(kind) == TST_CENTRED && s != B2B_END_NEIGHBOUR &&
+          e != B2B_END_NEIGHBOUR)
         continue;
       out[count].start_rule = s;
       out[count].end_rule = e;
@@ -40,12 +41,17 @@ static int rule_sets(int kind, rules_t *out) {
  * read of them shows up as a failure. */
 static unsigned mask_unused(int kind, rules_t r, double patch[12]) {
   unsigned used = 0x6u;
-  if (kind == B2B_CURVE_HERMITE_MIDPOINT) {
-    used = 0x2u | (r.start_rule == B2B_END_NEIGHBOUR ? 0x1u : 0u) |
-           (r.end_rule == B2B_END_NEIGHBOUR ? 0x4u : 0u);
-  } else if (kind != B2B_CURVE_LINEAR) {
-    used |= (r.start_rule == B2B_END_NEIGHBOUR ? 0x1u : 0u) |
-            (r.end_rule == B2B_END_NEIGHBOUR ? 0x8u : 0u);
+  switch (tst_kind_family(kind)) {
+    case TST_CHORD:
+      break;
+    case TST_CENTRED:
+      used = 0x2u | (r.start_rule == B2B_END_NEIGHBOUR ? 0x1u : 0u) |
+             (r.end_rule == B2B_END_NEIGHBOUR ? 0x4u : 0u);
+      break;
+    case TST_NODAL:
+      used |= (r.start_rule == B2B_END_NEIGHBOUR ? 0x1u : 0u) |
+              (r.end_rule == B2B_END_NEIGHBOUR ? 0x8u : 0u);
+      break;
   }
   for (int s = 0; s < 4; ++s)
     if (!(used & (1u << s)))
@@ -67,8 +73,7 @@ static void for_all_cases(case_fn fn, uint64_t seed, const char *what) {
   worst = 0.0;
   tst_rng rng;
   tst_rng_seed(&rng, seed);
-  for (int k = 0; k < 4; ++k) {
-    const int kind = tst_kinds[k];
+  for (int kind = 0; kind < B2B_CURVE_KIND_COUNT; ++kind) {
     rules_t rs[9];
     const int nr = rule_sets(kind, rs);
     for (int p = 0; p < N_PATCHES; ++p) {
@@ -200,11 +205,10 @@ START_TEST(second_derivatives_vanish_only_where_linear) {
   double patch[12];
   tst_random_patch(&rng, 1.0, 0.6, patch);
   static double d2x[864];
-  for (int k = 0; k < 4; ++k) {
-    const int kind = tst_kinds[k];
+  for (int kind = 0; kind < B2B_CURVE_KIND_COUNT; ++kind) {
     tst_eval(kind, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR, patch, NULL, 0.3, NULL, NULL, d2x);
     const double m = tst_max_abs(d2x, 864);
-    if (kind == B2B_CURVE_LINEAR || kind == B2B_CURVE_HERMITE_MIDPOINT)
+    if (tst_kind_family(kind) != TST_NODAL) /* linear in the nodes */
       ck_assert_msg(m == 0.0, "%s: expected zero second derivatives", tst_kind_name(kind));
     else
       ck_assert_msg(m > 1e-3, "%s: expected non-zero second derivatives, max %g",

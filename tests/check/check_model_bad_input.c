@@ -646,11 +646,14 @@ START_TEST(test_add_beam_bad) {
       EXPECT_FAIL(B2B_ERR_NONFINITE, "beam 1", "radius", NULL,
                   b2b_model_add_beam(m, nodes, 5, 0, -INFINITY, NDW, 0, &beam, MSG));
       break;
-    case 15:
-      CTX("kind 4");
-      EXPECT_FAIL(B2B_ERR_UNKNOWN_KIND, "beam 1", "kind 4", NULL,
-                  b2b_model_add_beam(m, nodes, 5, 0, RADIUS, 4, 0, &beam, MSG));
+    case 15: { /* the first value past the last kind */
+      char kind_word[32];
+      snprintf(kind_word, sizeof kind_word, "kind %d", B2B_CURVE_KIND_COUNT);
+      CTX("%s", kind_word);
+      EXPECT_FAIL(B2B_ERR_UNKNOWN_KIND, "beam 1", kind_word, NULL,
+                  b2b_model_add_beam(m, nodes, 5, 0, RADIUS, B2B_CURVE_KIND_COUNT, 0, &beam, MSG));
       break;
+    }
     case 16:
       CTX("kind -1");
       EXPECT_FAIL(B2B_ERR_UNKNOWN_KIND, "beam 1", "kind -1", NULL,

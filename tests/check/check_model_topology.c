@@ -58,14 +58,14 @@ static int loop_contacts(int kind, int self_on, double *arc_sep) {
 }
 
 START_TEST(self_contact_loop) {
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < B2B_CURVE_KIND_COUNT; ++k) {
     double sep;
-    const int on = loop_contacts(tst_kinds[k], 1, &sep);
-    const int off = loop_contacts(tst_kinds[k], 0, &sep);
+    const int on = loop_contacts(k, 1, &sep);
+    const int off = loop_contacts(k, 0, &sep);
     double sep_on;
-    loop_contacts(tst_kinds[k], 1, &sep_on);
+    loop_contacts(k, 1, &sep_on);
     printf("loop, %-22s: self-contact on: %d contact(s), its segments %.2f apart in t (the "
-           "crossing: 2); off: %d\n", tst_kind_name(tst_kinds[k]), on, sep_on, off);
+           "crossing: 2); off: %d\n", tst_kind_name(k), on, sep_on, off);
     ck_assert_msg(on == 1, "the loop touching itself: %d contacts, 1 expected", on);
     ck_assert_msg(sep_on > 1.8, "a contact between segments %.2f apart in t", sep_on);
     ck_assert_int_eq(off, 0);
@@ -102,10 +102,10 @@ static int corner_contacts(int kind, int shared) {
 }
 
 START_TEST(frame_joint_is_not_contact) {
-  for (int k = 0; k < 4; ++k) {
-    const int shared = corner_contacts(tst_kinds[k], 1), apart = corner_contacts(tst_kinds[k], 0);
+  for (int k = 0; k < B2B_CURVE_KIND_COUNT; ++k) {
+    const int shared = corner_contacts(k, 1), apart = corner_contacts(k, 0);
     printf("frame corner, %-22s: shared node %d contacts; a node of its own 0.05 above it %d\n",
-           tst_kind_name(tst_kinds[k]), shared, apart);
+           tst_kind_name(k), shared, apart);
     ck_assert_int_eq(shared, 0);
     ck_assert_int_ge(apart, 1);
   }
@@ -115,8 +115,8 @@ END_TEST
 START_TEST(crossing_at_nodes_of_both_counts_once) {
   char msg[B2B_ERRMSG_LEN] = "";
   int total = 0;
-  for (int ka = 0; ka < 4; ++ka)
-    for (int kb = 0; kb < 4; ++kb) {
+  for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+    for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb) {
       double x[3 * 14] = {0};
       int a[7], b[7], beam;
       for (int k = 0; k < 7; ++k) {
@@ -129,8 +129,8 @@ START_TEST(crossing_at_nodes_of_both_counts_once) {
       b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
       b2b_model *m = NULL;
       ok(b2b_model_create(&m, msg, sizeof msg), msg);
-      ok(b2b_model_add_beam(m, a, 7, 0, 0.1, tst_kinds[ka], 0, &beam, msg, sizeof msg), msg);
-      ok(b2b_model_add_beam(m, b, 7, 0, 0.1, tst_kinds[kb], 1, &beam, msg, sizeof msg), msg);
+      ok(b2b_model_add_beam(m, a, 7, 0, 0.1, ka, 0, &beam, msg, sizeof msg), msg);
+      ok(b2b_model_add_beam(m, b, 7, 0, 0.1, kb, 1, &beam, msg, sizeof msg), msg);
       ok(b2b_model_set_group_pair(m, 0, 1, p, msg, sizeof msg), msg);
       ok(b2b_model_finalize(m, 14, msg, sizeof msg), msg);
       ok(b2b_model_update(m, x, 3, 14, 1, msg, sizeof msg), msg);
@@ -138,7 +138,7 @@ START_TEST(crossing_at_nodes_of_both_counts_once) {
       double info[32];
       ok(b2b_model_contact_count(m, &n, msg, sizeof msg), msg);
       ck_assert_msg(n == 1, "%s on %s: %d contacts at the crossing nodes",
-                    tst_kind_name(tst_kinds[ka]), tst_kind_name(tst_kinds[kb]), n);
+                    tst_kind_name(ka), tst_kind_name(kb), n);
       ok(b2b_model_get_contact(m, 0, NULL, NULL, info, NULL, NULL, 0, msg, sizeof msg), msg);
       ck_assert(fabs(info[B2B_INFO_GAP] + 0.01) < 1e-3);
       total += n;

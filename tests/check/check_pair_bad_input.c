@@ -62,20 +62,23 @@ static const char *rule_name(int r) {
 
 /* ============================================================ geometry */
 
-/* A midpoint segment cannot be both ends of its beam. */
-static int valid_rules(int kind, int sr, int er) { return !(kind == MID && sr != NB && er != NB); }
+/* A segment centred on a node (midpoint) cannot be both ends of its beam. */
+static int valid_rules(int kind, int sr, int er) {
+  return !(tst_kind_family(kind) == TST_CENTRED && sr != NB && er != NB);
+}
 
 /* The slots a kind reads, from the table in <b2b/b2b_curve.h> (bit k: x(k+1)). */
 static unsigned used_slots(int kind, int sr, int er) {
-  switch (kind) {
-    case LIN: return 0x6u;
-    case MID: return 0x2u | (sr == NB ? 0x1u : 0u) | (er == NB ? 0x4u : 0u);
-    default: return 0x6u | (sr == NB ? 0x1u : 0u) | (er == NB ? 0x8u : 0u);
+  switch (tst_kind_family(kind)) {
+    case TST_CHORD: return 0x6u;
+    case TST_CENTRED: return 0x2u | (sr == NB ? 0x1u : 0u) | (er == NB ? 0x4u : 0u);
+    case TST_NODAL: return 0x6u | (sr == NB ? 0x1u : 0u) | (er == NB ? 0x8u : 0u);
   }
+  return 0u;
 }
 
 static int tangent_in_force(int kind, int sr, int er) {
-  return kind != LIN && (sr == TG || er == TG);
+  return tst_kind_family(kind) != TST_CHORD && (sr == TG || er == TG);
 }
 
 typedef struct {
@@ -659,7 +662,7 @@ START_TEST(test_params_int_range) {
       {"max_iterations", 0, B2B_ERR_RANGE},    {"max_iterations", -1, B2B_ERR_RANGE},
       {"max_iterations", INT_MIN, B2B_ERR_RANGE}, {"max_iterations", INT_MAX, B2B_ERR_RANGE},
       {"max_iterations", 1000000000, B2B_ERR_RANGE},
-      {"law", 2, B2B_ERR_UNKNOWN_KIND},        {"law", -1, B2B_ERR_UNKNOWN_KIND},
+      {"law", B2B_LAW_COUNT, B2B_ERR_UNKNOWN_KIND}, {"law", -1, B2B_ERR_UNKNOWN_KIND},
       {"law", INT_MAX, B2B_ERR_UNKNOWN_KIND},  {"law", INT_MIN, B2B_ERR_UNKNOWN_KIND},
   };
   char ctx[256], num[32];
@@ -1006,7 +1009,7 @@ START_TEST(test_pair_null_end_tangents) {
   b2b_params *p = tst_params(B2B_LAW_LINEAR, PEN, 0.0);
   char ctx[256];
   int n_fail = 0;
-  for (int kind = LIN; kind <= NDW; ++kind)
+  for (int kind = 0; kind < B2B_CURVE_KIND_COUNT; ++kind)
     for (int sr = NB; sr <= TG; ++sr)
       for (int er = NB; er <= TG; ++er) {
         if (!valid_rules(kind, sr, er)) continue;
@@ -1068,7 +1071,7 @@ END_TEST
 
 START_TEST(test_pair_unknown_kind) {
   const int b = _i;
-  const int bad[] = {-1, 4, 1000, INT_MIN, INT_MAX};
+  const int bad[] = {-1, B2B_CURVE_KIND_COUNT, 1000, INT_MIN, INT_MAX};
   b2b_params *p = tst_params(B2B_LAW_LINEAR, PEN, 0.0);
   char ctx[256], num[32];
   for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
@@ -1118,7 +1121,7 @@ START_TEST(test_pair_midpoint_both_ends) {
   c.g.seg[3 * b + 2] = TG;
   char ctx[256];
   CTX("%s: midpoint (REFLECT, TANGENT)", beam_name[b]);
-  expect_fail(ctx, &c, B2B_ERR_RANGE, beam_name[b], "midpoint", NULL);
+  expect_fail(ctx, &c, B2B_ERR_RANGE, beam_name[b], "B2B_CURVE_HERMITE_MIDPOINT", "centred");
   b2b_params_destroy(&p);
 }
 END_TEST
@@ -1132,7 +1135,7 @@ static int bad_coordinate_cases(const b2b_params *p, int b, const double *bad, i
                                 int want, const char *word) {
   char ctx[256], node[8];
   int n_cases = 0;
-  for (int kind = LIN; kind <= NDW; ++kind)
+  for (int kind = 0; kind < B2B_CURVE_KIND_COUNT; ++kind)
     for (int sr = NB; sr <= TG; ++sr)
       for (int er = NB; er <= TG; ++er) {
         if (!valid_rules(kind, sr, er)) continue;
@@ -1195,7 +1198,7 @@ START_TEST(test_pair_unused_slots) {
   b2b_params *p = tst_params(B2B_LAW_LINEAR, PEN, 0.0);
   char ctx[256];
   int n_unused = 0;
-  for (int kind = LIN; kind <= NDW; ++kind)
+  for (int kind = 0; kind < B2B_CURVE_KIND_COUNT; ++kind)
     for (int sr = NB; sr <= TG; ++sr)
       for (int er = NB; er <= TG; ++er) {
         if (!valid_rules(kind, sr, er)) continue;

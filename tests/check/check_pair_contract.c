@@ -99,10 +99,10 @@ START_TEST(not_converged_is_reachable_and_reported) {
   tst_rng rng;
   tst_rng_seed(&rng, 7001);
   for (int fric = 0; fric < 2; ++fric)
-    for (int ka = 0; ka < 4; ++ka)
-      for (int kb = 0; kb < 4; ++kb)
+    for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+      for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb)
         for (int rep = 0; rep < 3; ++rep) {
-          tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+          tst_pair_spec spec = {{ka, kb}, {0, 0}, {0, 0}, {0.2, 0.15}};
           double X[24];
           const double angle = tst_uniform(&rng, 30, 90);
           tst_crossing(&rng, &spec, 0.5, angle, tst_uniform(&rng, -0.7, 0.7),
@@ -205,12 +205,12 @@ START_TEST(tangent_after_pass_through) {
   n_checked = 0;
   tst_rng rng;
   tst_rng_seed(&rng, 7002);
-  for (int law = 0; law < 2; ++law) {
+  for (int law = 0; law < B2B_LAW_COUNT; ++law) {
     b2b_params *p = tst_params(law, 1e3, 0.05);
-    for (int ka = 0; ka < 4; ++ka)
-      for (int kb = 0; kb < 4; ++kb)
+    for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+      for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb)
         for (int rep = 0; rep < 2; ++rep) {
-          tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+          tst_pair_spec spec = {{ka, kb}, {0, 0}, {0, 0}, {0.2, 0.15}};
           char what[160];
           /* well through (0.3 beyond), or just through (0.05 beyond) */
           const double d2 = rep ? 0.05 : 0.3;
@@ -235,9 +235,9 @@ START_TEST(friction_tangent_after_pass_through) {
   /* mu 0.3, eps_T 1e3: the step moves A's and B's material points along
    * the normal only, so the pair sticks (no tangential motion) */
   b2b_params *p = tst_params_friction(B2B_LAW_LINEAR, 1e3, 0.0, 0.3, 1e3);
-  for (int ka = 0; ka < 4; ++ka)
-    for (int kb = 0; kb < 4; ++kb) {
-      tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+  for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+    for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb) {
+      tst_pair_spec spec = {{ka, kb}, {0, 0}, {0, 0}, {0.2, 0.15}};
       char what[160];
       snprintf(what, sizeof what, "friction, %s x %s", tst_kind_name(spec.kind[0]),
                tst_kind_name(spec.kind[1]));

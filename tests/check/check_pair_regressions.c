@@ -9,7 +9,9 @@
  *    the search stopped on a tolerance of 64 eps |coordinate| and residual
  *    and tangent were off by 3e-6 relative (nodal and weighted kinds);
  *  - near-intersecting axes: a normal tilted by 6e-14 L / rho;
- *  - a midpoint hairpin (x1 = x3) and a nodal cusp: NaN with B2B_OK. */
+ *  - a midpoint hairpin (x1 = x3) and a nodal cusp: NaN with B2B_OK;
+ *  - near-parallel straight segments: NOT_CONVERGED instead of PARALLEL;
+ *  - candidates beyond the search's box: every iteration spent at its edge. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -124,7 +126,10 @@ START_TEST(handover_of_an_absurd_parameter_is_refused) {
 END_TEST
 
 /* The same crossing at the origin and translated by about 1e8 (coordinates on
- * a grid of 2^-20, so the translation is exact): the results of a translated
+ * a grid of 2^-26, the spacing of doubles at 1e8, so the translation is
+ * exact, while a midpoint of two nodes there is not: the midpoint kind formed
+ * (x1 + x2) / 2 at 1e8 and was 5e-9 off until positions became offsets to a
+ * node of the patch, found against the AD reference): the results of a translated
  * pair must be those of the original up to rounding of the patch's size, for
  * every kind, frictionless and in a second, sliding step with friction. */
 START_TEST(far_from_the_origin_as_at_the_origin) {
@@ -132,14 +137,14 @@ START_TEST(far_from_the_origin_as_at_the_origin) {
   tst_rng rng;
   tst_rng_seed(&rng, 4242);
   double worst_r = 0.0, worst_k = 0.0;
-  for (int ka = 0; ka < 4; ++ka)
-    for (int kb = 0; kb < 4; ++kb) {
-      tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+  for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+    for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb) {
+      tst_pair_spec spec = {{ka, kb}, {0, 0}, {0, 0}, {0.2, 0.15}};
       double X[24], Y[24], X2[24], Y2[24];
       tst_crossing(&rng, &spec, 0.5, tst_uniform(&rng, 20, 90), tst_uniform(&rng, -0.6, 0.6),
                    tst_uniform(&rng, -0.6, 0.6), 0.3, X);
       for (int i = 0; i < 24; ++i) {
-        X[i] = ldexp(nearbyint(ldexp(X[i], 20)), -20); /* NaN (unused slots) stays NaN */
+        X[i] = ldexp(nearbyint(ldexp(X[i], 26)), -26); /* NaN (unused slots) stays NaN */
         X2[i] = X[i] + (i % 3 == 1 ? 0.015625 : 0.0);  /* the second step slides along y */
         Y[i] = X[i] + offset[i % 3];
         Y2[i] = X2[i] + offset[i % 3];
@@ -198,12 +203,12 @@ START_TEST(normal_accurate_as_the_axes_meet) {
   tst_rng rng;
   tst_rng_seed(&rng, 777);
   double worst = 0.0; /* tilt * rho / eps */
-  for (int ka = 0; ka < 4; ++ka)
-    for (int kb = 0; kb < 4; ++kb)
+  for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+    for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb)
       for (int e = 4; e <= 10; ++e)
         for (int rep = 0; rep < 3; ++rep) {
           const double rho = pow(10.0, -e);
-          tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+          tst_pair_spec spec = {{ka, kb}, {0, 0}, {0, 0}, {0.2, 0.15}};
           const double xs = tst_uniform(&rng, -0.6, 0.6), es = tst_uniform(&rng, -0.6, 0.6);
           double X[24];
           tst_crossing(&rng, &spec, 0.5, tst_uniform(&rng, 20, 90), xs, es, rho, X);
@@ -303,6 +308,63 @@ START_TEST(cusp_gives_finite_outputs) {
 }
 END_TEST
 
+/* Straight segments crossing at angles far below "parallel_angle" (default
+ * 0.5 degrees): the search cannot converge on the (nearly) singular problem
+ * and returned NOT_CONVERGED after every iteration; b2b_pair.h promises
+ * PARALLEL for axes within the parallel angle (found with the AD reference). */
+START_TEST(near_parallel_is_parallel_not_a_failed_search) {
+  const double angles[] = {1e-3, 1e-4, 3e-5, 1e-5, 3e-6, 2e-6, 1.5e-6, 1.1e-6, 9e-7};
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  for (size_t q = 0; q < sizeof angles / sizeof angles[0]; ++q) {
+    const double c = cos(angles[q]), s = sin(angles[q]);
+    const double X[24] = {0, 0, 0, -0.5, 0.1, 0, 0.5, 0.1, 0, 0, 0, 0,
+                          0, 0, 0, 0.15 - 0.5 * c, 0.1 - 0.5 * s, 0.3,
+                          0.15 + 0.5 * c, 0.1 + 0.5 * s, 0.3, 0, 0, 0};
+    const double radii[2] = {0.2, 0.15};
+    double h0[8] = {0}, h1[8], info[32], r[24];
+    char msg[B2B_ERRMSG_LEN] = "";
+    int st = -1;
+    ck_assert_int_eq(b2b_pair_eval(p, kLinear, X, NULL, radii, h0, h1, 8, &st, info, r, NULL, 24,
+                                   msg, sizeof msg),
+                     B2B_OK);
+    ck_assert_msg(st == B2B_CONTACT_PARALLEL, "angle %g rad: status %d after %g iterations",
+                  angles[q], st, info[B2B_INFO_ITERATIONS]);
+    ck_assert(all_finite(info, 32) && info[B2B_INFO_ANGLE] < 0.5);
+  }
+  b2b_params_destroy(&p);
+}
+END_TEST
+
+/* Candidates whose closest point lies beyond the search's box (axes crossing
+ * at xi = 4.5, every kind of B): OUTSIDE after at most 4 iterations (from the
+ * segment's end, two steps to the box's edge, two held there), each without
+ * a line search into the wall. The search spent every iteration at the
+ * box's edge (50; 22.7 us a call), then up to 40 halvings of a step into the
+ * wall per iteration (the cost study's OUTSIDE row: 1.4-3.5x an active
+ * residual). */
+START_TEST(outside_candidates_stop_at_once) {
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb) {
+    const int seg[6] = {B2B_CURVE_LINEAR, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR,
+                        kb, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR};
+    /* A from (-1,0,0) to (1,0,0); B along y through x = 4.5, 0.2 above */
+    const double X[24] = {-3, 0, 0, -1, 0, 0, 1, 0, 0, 3, 0, 0,
+                          4.5, -3, 0.2, 4.5, -1, 0.2, 4.5, 1, 0.2, 4.5, 3, 0.2};
+    const double radii[2] = {0.1, 0.1};
+    double h0[8] = {0}, h1[8], info[32], r[24], K[576];
+    char msg[B2B_ERRMSG_LEN] = "";
+    int st = -1;
+    ck_assert_int_eq(b2b_pair_eval(p, seg, X, NULL, radii, h0, h1, 8, &st, info, r, K, 24, msg,
+                                   sizeof msg),
+                     B2B_OK);
+    ck_assert_msg(st == B2B_CONTACT_OUTSIDE && info[B2B_INFO_ITERATIONS] <= 4.0,
+                  "%s: status %d after %g iterations", tst_kind_name(kb), st,
+                  info[B2B_INFO_ITERATIONS]);
+  }
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("pair_regressions");
   TCase *tc = tcase_create("regressions");
@@ -314,6 +376,8 @@ int main(void) {
   tcase_add_test(tc, normal_accurate_as_the_axes_meet);
   tcase_add_test(tc, midpoint_hairpin_is_folded);
   tcase_add_test(tc, cusp_gives_finite_outputs);
+  tcase_add_test(tc, near_parallel_is_parallel_not_a_failed_search);
+  tcase_add_test(tc, outside_candidates_stop_at_once);
   suite_add_tcase(s, tc);
   return tst_run_suite(s);
 }

@@ -84,12 +84,12 @@ START_TEST(all_kinds_both_laws) {
   reset();
   tst_rng rng;
   tst_rng_seed(&rng, 1001);
-  for (int law = 0; law < 2; ++law) {
+  for (int law = 0; law < B2B_LAW_COUNT; ++law) {
     b2b_params *p = tst_params(law, 1e3, 0.05);
-    for (int ka = 0; ka < 4; ++ka)
-      for (int kb = 0; kb < 4; ++kb)
+    for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+      for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb)
         for (int rep = 0; rep < 4; ++rep) {
-          tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+          tst_pair_spec spec = {{ka, kb}, {0, 0}, {0, 0}, {0.2, 0.15}};
           double X[24];
           const double angle = tst_uniform(&rng, 20, 90);
           /* penetrating, or (quadratic law) inside the regularisation zone */
@@ -116,7 +116,7 @@ START_TEST(crossing_angles_down_to_1_degree) {
   const double angles[] = {90, 60, 30, 10, 5, 3, 2, 1};
   b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
   for (size_t q = 0; q < sizeof angles / sizeof angles[0]; ++q)
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < B2B_CURVE_KIND_COUNT; ++k)
       for (int rep = 0; rep < 3; ++rep) {
         /* Slender beams on curved patches. The closest point at the crossing
          * is a local minimum of the distance only while angle^2 exceeds the
@@ -124,7 +124,7 @@ START_TEST(crossing_angles_down_to_1_degree) {
          * off along the valley and point-wise contact is undefined (the
          * element reports OUTSIDE, correctly). So: radii small against the
          * element length, and turning below the crossing angle. */
-        tst_pair_spec spec = {{tst_kinds[k], tst_kinds[(k + rep) % 4]}, {0, 0}, {0, 0},
+        tst_pair_spec spec = {{k, (k + rep) % B2B_CURVE_KIND_COUNT}, {0, 0}, {0, 0},
                               {0.02, 0.015}};
         double X[24];
         const double rad = angles[q] * 3.14159265358979323846 / 180.0;
@@ -152,11 +152,12 @@ START_TEST(near_joints_and_beam_ends) {
   tst_rng_seed(&rng, 1003);
   b2b_params *p = tst_params(B2B_LAW_QUADRATIC, 5e2, 0.02);
   const double stars[] = {-0.99, 0.99};
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < B2B_CURVE_KIND_COUNT; ++k)
     for (int end = 0; end < 2; ++end)
       for (int s = 0; s < 2; ++s)
         for (int rep = 0; rep < 3; ++rep) {
-          tst_pair_spec spec = {{tst_kinds[k], tst_kinds[3 - k]}, {0, 0}, {0, 0}, {0.2, 0.15}};
+          tst_pair_spec spec = {{k, B2B_CURVE_KIND_COUNT - 1 - k}, {0, 0}, {0, 0},
+                                {0.2, 0.15}};
           /* a beam end on the side of the closest point (midpoint segments
            * cannot end on both sides, so only that one) */
           if (end) {

@@ -38,16 +38,16 @@ START_TEST(each_mode_against_its_definition) {
   tst_rng_seed(&rng, 31337);
   double worst_main = 0, worst_fd = 0;
   int cases = 0;
-  for (int law = 0; law < 2; ++law)
+  for (int law = 0; law < B2B_LAW_COUNT; ++law)
     for (int fr = 0; fr < 2; ++fr) {
       const double mu = fr ? 0.3 : 0.0;
       b2b_params *p[4];
       for (int mode = 0; mode < 4; ++mode) p[mode] = with_mode(law, mu, mode);
       b2b_params *p_default = with_mode(law, mu, B2B_TANGENT_EXACT);
       const int nh = tst_history_len(p[0]);
-      for (int ka = 0; ka < 4; ++ka)
-        for (int kb = 0; kb < 4; ++kb) {
-          tst_pair_spec spec = {{tst_kinds[ka], tst_kinds[kb]},
+      for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+        for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb) {
+          tst_pair_spec spec = {{ka, kb},
                                 {B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR},
                                 {B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR},
                                 {0.1, 0.1}};

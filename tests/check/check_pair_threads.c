@@ -99,7 +99,7 @@ static void setup_jobs(void) {
   tst_rng_seed(&rng, 20240611u);
   for (int n = 0; n < N_JOBS; ++n) {
     job_t *j = &jobs[n];
-    const int ka = tst_kinds[n % 4], kb = tst_kinds[(n / 4) % 4];
+    const int ka = TST_KIND_A(n), kb = TST_KIND_B(n);
     const tst_pair_spec spec = {{ka, kb}, {B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR},
                                 {B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR}, {0.2, 0.15}};
     const int segments[6] = {ka, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR,

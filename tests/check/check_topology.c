@@ -17,12 +17,33 @@
 
 static int min_nodes(int closed) { return closed ? 3 : 2; }
 
-static int is_nodal(int kind) {
-  return kind == B2B_CURVE_HERMITE_NODAL || kind == B2B_CURVE_HERMITE_NODAL_WEIGHTED;
+/* The patch slots a segment of the kind reads inside a beam (bit k: slot
+ * x(k+1)), as the header documents them. */
+static unsigned inner_slots(int kind) {
+  switch (tst_kind_family(kind)) {
+    case TST_CHORD: return 0x6u;
+    case TST_CENTRED: return 0x7u;
+    case TST_NODAL: return 0xfu;
+  }
+  return 0u;
 }
 
+/* The slots (0-based) of the neighbours before the segment's first node and
+ * after its last, which a beam end replaces by its rule; -1: not read. */
+static void neighbour_slots(int kind, int *before, int *after) {
+  *before = *after = -1;
+  switch (tst_kind_family(kind)) {
+    case TST_CHORD: break;
+    case TST_CENTRED: *before = 0, *after = 2; break;
+    case TST_NODAL: *before = 0, *after = 3; break;
+  }
+}
+
+/* One segment per node, centred on it, rather than one per element. */
+static int centred_on_node(int kind) { return tst_kind_family(kind) == TST_CENTRED; }
+
 static int expected_count(int kind, int n, int closed) {
-  if (kind == B2B_CURVE_HERMITE_MIDPOINT) return n;
+  if (centred_on_node(kind)) return n;
   return closed ? n : n - 1;
 }
 
@@ -71,7 +92,7 @@ static void patch_of(int kind, int n, int closed, int s, int nodes[4], int *sr, 
 /* ------------------------------------------------------------------ counts */
 
 START_TEST(test_counts) {
-  const int kind = tst_kinds[_i];
+  const int kind = _i;
   for (int closed = 0; closed <= 1; ++closed)
     for (int n = min_nodes(closed); n <= N_MAX; ++n) {
       const int count = count_of(kind, n, closed);
@@ -100,7 +121,7 @@ END_TEST
 /* ------------------------------------------------------------------- slots */
 
 START_TEST(test_patch_slots) {
-  const int kind = tst_kinds[_i];
+  const int kind = _i;
   for (int closed = 0; closed <= 1; ++closed)
     for (int n = min_nodes(closed); n <= N_MAX; ++n) {
       const int count = expected_count(kind, n, closed);
@@ -108,9 +129,8 @@ START_TEST(test_patch_slots) {
         int nodes[4], sr, er;
         patch_of(kind, n, closed, s, nodes, &sr, &er);
         int want[4];
-        for (int k = 0; k < 4; ++k) want[k] = beam_node((long long)s - 1 + k, n, closed);
-        if (kind == B2B_CURVE_LINEAR) want[0] = want[3] = -1;
-        if (kind == B2B_CURVE_HERMITE_MIDPOINT) want[3] = -1;
+        for (int k = 0; k < 4; ++k)
+          want[k] = (inner_slots(kind) >> k & 1u) ? beam_node((long long)s - 1 + k, n, closed) : -1;
         ASSERT_NODES(kind, n, closed, s, nodes, want[0], want[1], want[2], want[3]);
         /* Every slot is a beam node or -1; slot x2 is always node s. */
         for (int k = 0; k < 4; ++k) ck_assert(nodes[k] >= -1 && nodes[k] < n);
@@ -121,7 +141,7 @@ START_TEST(test_patch_slots) {
 END_TEST
 
 START_TEST(test_patch_rules) {
-  const int kind = tst_kinds[_i];
+  const int kind = _i;
   for (int closed = 0; closed <= 1; ++closed)
     for (int n = min_nodes(closed); n <= N_MAX; ++n) {
       const int count = expected_count(kind, n, closed);
@@ -136,15 +156,12 @@ START_TEST(test_patch_rules) {
                       want_er);
         /* The slot that a REFLECT rule replaces is missing, and only then
          * (for the kinds that read it). */
-        if (is_nodal(kind)) {
-          ck_assert_int_eq(nodes[0] == -1, sr == B2B_END_REFLECT);
-          ck_assert_int_eq(nodes[3] == -1, er == B2B_END_REFLECT);
-        } else if (kind == B2B_CURVE_HERMITE_MIDPOINT) {
-          ck_assert_int_eq(nodes[0] == -1, sr == B2B_END_REFLECT);
-          ck_assert_int_eq(nodes[2] == -1, er == B2B_END_REFLECT);
-          /* A midpoint segment never both starts and ends the beam. */
-          ck_assert(!(sr == B2B_END_REFLECT && er == B2B_END_REFLECT));
-        }
+        int before, after;
+        neighbour_slots(kind, &before, &after);
+        if (before >= 0) ck_assert_int_eq(nodes[before] == -1, sr == B2B_END_REFLECT);
+        if (after >= 0) ck_assert_int_eq(nodes[after] == -1, er == B2B_END_REFLECT);
+        /* A segment centred on a node never both starts and ends the beam. */
+        if (centred_on_node(kind)) ck_assert(!(sr == B2B_END_REFLECT && er == B2B_END_REFLECT));
       }
     }
 }
@@ -222,7 +239,7 @@ END_TEST
 /* Rings: every slot a real node (modulo n), only NEIGHBOUR rules, and every
  * node in slot x2 exactly once. */
 START_TEST(test_closed_rings) {
-  const int kind = tst_kinds[_i];
+  const int kind = _i;
   for (int n = 3; n <= N_MAX; ++n) {
     int seen[N_MAX] = {0};
     const int count = count_of(kind, n, 1);
@@ -232,9 +249,9 @@ START_TEST(test_closed_rings) {
       patch_of(kind, n, 1, s, v, &sr, &er);
       ck_assert_int_eq(sr, B2B_END_NEIGHBOUR);
       ck_assert_int_eq(er, B2B_END_NEIGHBOUR);
-      ck_assert_int_eq(v[0] >= 0, kind != B2B_CURVE_LINEAR);
+      ck_assert_int_eq(v[0] >= 0, (inner_slots(kind) & 0x1u) != 0);
       ck_assert(v[1] >= 0 && v[1] < n && v[2] >= 0 && v[2] < n);
-      ck_assert_int_eq(v[3] >= 0, is_nodal(kind));
+      ck_assert_int_eq(v[3] >= 0, (inner_slots(kind) & 0x8u) != 0);
       ck_assert_int_eq(v[2], (v[1] + 1) % n);
       if (v[0] >= 0) ck_assert_int_eq(v[0], (v[1] + n - 1) % n);
       if (v[3] >= 0) ck_assert_int_eq(v[3], (v[1] + 2) % n);
@@ -248,7 +265,7 @@ END_TEST
 /* ------------------------------------------------------------ consistency */
 
 START_TEST(test_consecutive_segments_share_nodes) {
-  const int kind = tst_kinds[_i];
+  const int kind = _i;
   for (int closed = 0; closed <= 1; ++closed)
     for (int n = min_nodes(closed); n <= N_MAX; ++n) {
       const int count = count_of(kind, n, closed);
@@ -257,14 +274,14 @@ START_TEST(test_consecutive_segments_share_nodes) {
         int a[4], b[4], sra, era, srb, erb;
         patch_of(kind, n, closed, s, a, &sra, &era);
         patch_of(kind, n, closed, t, b, &srb, &erb);
-        if (kind == B2B_CURVE_HERMITE_MIDPOINT) {
+        if (centred_on_node(kind)) {
           ck_assert_int_eq(b[1], t);
           ck_assert_int_eq(a[2], b[1]); /* element x2-x3 of s is element x1-x2 of s + 1 */
           ck_assert_int_eq(a[1], b[0]);
         } else {
           ck_assert_msg(a[2] == b[1], "%s n=%d %s: slot 2 of segment %d (%d) != slot 1 of %d (%d)",
                         tst_kind_name(kind), n, closed ? "closed" : "open", s, a[2], t, b[1]);
-          if (is_nodal(kind)) { /* the patches overlap by three nodes */
+          if (inner_slots(kind) == 0xfu) { /* the patches overlap by three nodes */
             ck_assert_int_eq(a[1], b[0]);
             ck_assert_int_eq(a[3], b[2]);
           }
@@ -280,14 +297,14 @@ END_TEST
 /* The segments of an open beam cover it: the first starts at node 0, the
  * last ends at node n - 1 (midpoint: is centred on it). */
 START_TEST(test_open_beam_covered) {
-  const int kind = tst_kinds[_i];
+  const int kind = _i;
   for (int n = 2; n <= N_MAX; ++n) {
     const int count = count_of(kind, n, 0);
     int v[4], sr, er;
     patch_of(kind, n, 0, 0, v, &sr, &er);
     ck_assert_int_eq(v[1], 0);
     patch_of(kind, n, 0, count - 1, v, &sr, &er);
-    if (kind == B2B_CURVE_HERMITE_MIDPOINT)
+    if (centred_on_node(kind))
       ck_assert_int_eq(v[1], n - 1);
     else
       ck_assert_int_eq(v[2], n - 1);
@@ -302,8 +319,7 @@ static const int big_n[] = {(1 << 30) + 3, INT_MAX - 1, INT_MAX};
 START_TEST(test_large_beams) {
   const int n = big_n[_i / 2];
   const int closed = _i % 2;
-  for (int k = 0; k < 4; ++k) {
-    const int kind = tst_kinds[k];
+  for (int kind = 0; kind < B2B_CURVE_KIND_COUNT; ++kind) {
     const int count = count_of(kind, n, closed);
     ck_assert_int_eq(count, expected_count(kind, n, closed));
     const int segs[] = {0, 1, count / 2, count - 2, count - 1};
@@ -312,9 +328,8 @@ START_TEST(test_large_beams) {
       int v[4], sr, er;
       patch_of(kind, n, closed, s, v, &sr, &er);
       int want[4];
-      for (int q = 0; q < 4; ++q) want[q] = beam_node((long long)s - 1 + q, n, closed);
-      if (kind == B2B_CURVE_LINEAR) want[0] = want[3] = -1;
-      if (kind == B2B_CURVE_HERMITE_MIDPOINT) want[3] = -1;
+      for (int q = 0; q < 4; ++q)
+        want[q] = (inner_slots(kind) >> q & 1u) ? beam_node((long long)s - 1 + q, n, closed) : -1;
       ASSERT_NODES(kind, n, closed, s, v, want[0], want[1], want[2], want[3]);
       ck_assert_int_eq(sr, (!closed && s == 0) ? B2B_END_REFLECT : B2B_END_NEIGHBOUR);
       ck_assert_int_eq(er, (!closed && s == count - 1) ? B2B_END_REFLECT : B2B_END_NEIGHBOUR);
@@ -328,20 +343,20 @@ static Suite *make_suite(void) {
   TCase *tc;
 
   tc = tcase_create("count");
-  tcase_add_loop_test(tc, test_counts, 0, 4);
+  tcase_add_loop_test(tc, test_counts, 0, B2B_CURVE_KIND_COUNT);
   tcase_add_test(tc, test_counts_table);
   suite_add_tcase(s, tc);
 
   tc = tcase_create("patch");
-  tcase_add_loop_test(tc, test_patch_slots, 0, 4);
-  tcase_add_loop_test(tc, test_patch_rules, 0, 4);
+  tcase_add_loop_test(tc, test_patch_slots, 0, B2B_CURVE_KIND_COUNT);
+  tcase_add_loop_test(tc, test_patch_rules, 0, B2B_CURVE_KIND_COUNT);
   tcase_add_test(tc, test_patch_table);
-  tcase_add_loop_test(tc, test_closed_rings, 0, 4);
+  tcase_add_loop_test(tc, test_closed_rings, 0, B2B_CURVE_KIND_COUNT);
   suite_add_tcase(s, tc);
 
   tc = tcase_create("consistency");
-  tcase_add_loop_test(tc, test_consecutive_segments_share_nodes, 0, 4);
-  tcase_add_loop_test(tc, test_open_beam_covered, 0, 4);
+  tcase_add_loop_test(tc, test_consecutive_segments_share_nodes, 0, B2B_CURVE_KIND_COUNT);
+  tcase_add_loop_test(tc, test_open_beam_covered, 0, B2B_CURVE_KIND_COUNT);
   suite_add_tcase(s, tc);
 
   tc = tcase_create("large_beams");

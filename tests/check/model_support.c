@@ -17,7 +17,7 @@ void tst_network(tst_rng *rng, int n_fibres, int nodes_per_fibre, double h, doub
     sc->first[f] = f * nodes_per_fibre;
     sc->count[f] = nodes_per_fibre;
     sc->closed[f] = closed;
-    sc->kind[f] = tst_kinds[f % 4];
+    sc->kind[f] = f % B2B_CURVE_KIND_COUNT;
     sc->group[f] = f % 2;
     sc->self[f] = self_every > 0 && f % self_every == 0;
     sc->radius[f] = radius * tst_uniform(rng, 0.8, 1.2);

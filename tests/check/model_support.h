@@ -21,7 +21,7 @@ typedef struct {
 /* n_fibres random fibres of nodes_per_fibre nodes (element length h) in a
  * cube of side box: random start and direction, turning up to max_turn per
  * node (0: straight); every closed_every-th fibre a ring (0: none), every
- * self_every-th with self-contact (0: none); kinds cycle through all four;
+ * self_every-th with self-contact (0: none); kinds cycle through all of them;
  * groups alternate 0, 1. */
 void tst_network(tst_rng *rng, int n_fibres, int nodes_per_fibre, double h, double box,
                  double radius, double max_turn, int closed_every, int self_every,

@@ -62,10 +62,16 @@ static void rotation_between(const double *a, const double *b, double R[9]) {
 
 static void mask_unused(int kind, int sr, int er, double *patch) {
   unsigned used = 0x6u;
-  if (kind == B2B_CURVE_HERMITE_MIDPOINT)
-    used = 0x2u | (sr == B2B_END_NEIGHBOUR ? 0x1u : 0u) | (er == B2B_END_NEIGHBOUR ? 0x4u : 0u);
-  else if (kind != B2B_CURVE_LINEAR)
-    used |= (sr == B2B_END_NEIGHBOUR ? 0x1u : 0u) | (er == B2B_END_NEIGHBOUR ? 0x8u : 0u);
+  switch (tst_kind_family(kind)) {
+    case TST_CHORD:
+      break;
+    case TST_CENTRED:
+      used = 0x2u | (sr == B2B_END_NEIGHBOUR ? 0x1u : 0u) | (er == B2B_END_NEIGHBOUR ? 0x4u : 0u);
+      break;
+    case TST_NODAL:
+      used |= (sr == B2B_END_NEIGHBOUR ? 0x1u : 0u) | (er == B2B_END_NEIGHBOUR ? 0x8u : 0u);
+      break;
+  }
   for (int s = 0; s < 4; ++s)
     if (!(used & (1u << s)))
       for (int i = 0; i < 3; ++i) patch[3 * s + i] = NAN;

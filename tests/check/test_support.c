@@ -5,8 +5,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-const int tst_kinds[4] = {B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL,
-                          B2B_CURVE_HERMITE_NODAL_WEIGHTED};
+const int tst_kinds[TST_KINDS_MAX] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+typedef char tst_kinds_holds_every_kind[B2B_CURVE_KIND_COUNT <= TST_KINDS_MAX ? 1 : -1];
 
 const char *tst_kind_name(int kind) {
   switch (kind) {
@@ -14,8 +14,24 @@ const char *tst_kind_name(int kind) {
     case B2B_CURVE_HERMITE_MIDPOINT: return "hermite-midpoint";
     case B2B_CURVE_HERMITE_NODAL: return "hermite-nodal";
     case B2B_CURVE_HERMITE_NODAL_WEIGHTED: return "hermite-nodal-weighted";
-    default: return "unknown";
+    default: return kind >= 0 && kind < B2B_CURVE_KIND_COUNT ? "an unlabelled kind" : "not a kind";
   }
+}
+
+tst_family tst_kind_family(int kind) {
+  switch (kind) {
+    case B2B_CURVE_LINEAR: return TST_CHORD;
+    case B2B_CURVE_HERMITE_MIDPOINT: return TST_CENTRED;
+    case B2B_CURVE_HERMITE_NODAL:
+    case B2B_CURVE_HERMITE_NODAL_WEIGHTED: return TST_NODAL;
+    default: tst_no_expectation("tst_kind_family", kind); return TST_NODAL;
+  }
+}
+
+void tst_no_expectation(const char *what, int kind) {
+  ck_abort_msg("%s: no expectation for curve kind %d; B2B_CURVE_KIND_COUNT is %d (a kind added "
+               "to the library needs its case here)",
+               what, kind, B2B_CURVE_KIND_COUNT);
 }
 
 void tst_rng_seed(tst_rng *rng, uint64_t seed) { rng->state = seed; }

@@ -30,9 +30,38 @@
     }                                                       \
   } while (0)
 
-/* The four curve kinds, in enum order. */
-extern const int tst_kinds[4];
+/* The curve kinds are 0 .. B2B_CURVE_KIND_COUNT - 1 and the normal laws
+ * 0 .. B2B_LAW_COUNT - 1 (b2b_curve.h, b2b_pair.h): the tests loop to these
+ * counts, so every loop covers a kind or law the library adds. */
+
+/* Kept for suites that still index it: tst_kinds[k] is kind k (k <
+ * B2B_CURVE_KIND_COUNT). New code loops to B2B_CURVE_KIND_COUNT and uses the
+ * kind itself. */
+#define TST_KINDS_MAX 16
+extern const int tst_kinds[TST_KINDS_MAX];
+
+/* The n-th pair of curve kinds (A, B), n = 0, 1, ...: all
+ * B2B_CURVE_KIND_COUNT^2 of them, then again. */
+#define TST_KIND_A(n) ((n) % B2B_CURVE_KIND_COUNT)
+#define TST_KIND_B(n) (((n) / B2B_CURVE_KIND_COUNT) % B2B_CURVE_KIND_COUNT)
+
+/* A short label of a curve kind for messages ("linear", ...); a kind that
+ * has none yet reads "an unlabelled kind", any other value "not a kind". */
 const char *tst_kind_name(int kind);
+
+/* What the tests expect of a curve kind follows its family, the behaviour
+ * b2b_curve.h documents for it: the chord (LINEAR: slots x2, x3, linear in
+ * the nodes, no end tangents), a curve centred on a node (HERMITE_MIDPOINT:
+ * one segment per node, slots x1..x3), a node-preserving curve
+ * (HERMITE_NODAL and _WEIGHTED: slots x1..x4). Tests switch on the family
+ * without a default, so -Wswitch names those a new family must join; a kind
+ * without a family fails the running test (tst_no_expectation). */
+typedef enum { TST_CHORD, TST_CENTRED, TST_NODAL } tst_family;
+tst_family tst_kind_family(int kind);
+
+/* Fails the running test: `what` states an expectation per curve kind and
+ * has none for `kind` (one the library added later: give it its case). */
+void tst_no_expectation(const char *what, int kind);
 
 /* Deterministic generator (splitmix64): every run sees the same numbers. */
 typedef struct {
