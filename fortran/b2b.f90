@@ -23,9 +23,14 @@
 !>    B2B_ERR_SIZE. Node coordinates are (3, nodes) arrays.
 !>  * Node and segment numbers are 1-based; a missing node is 0. The two beams
 !>    of a pair are numbered 1 (A) and 2 (B), as the columns of segments(3,2)
-!>    of b2b_pair_eval (beam of b2b_pair_history_handover).
-!>  * Constants that index a C array (B2B_INFO_*) keep their 0-based C
-!>    values: the C entry info[B2B_INFO_GAP] is info(B2B_INFO_GAP + 1).
+!>    of b2b_pair_eval (beam of b2b_pair_history_handover). Messages use
+!>    these numbers and the Fortran arguments: hist_old(k), size(hist_old),
+!>    "end_tangents is absent".
+!>  * Constants that index a C array (B2B_INFO_*, B2B_COUNT_*, B2B_TOTAL_*)
+!>    keep their 0-based C values. Index Fortran arrays with their 1-based
+!>    twins B2B_IX_* (= the C value + 1): info(B2B_IX_INFO_GAP) is the C
+!>    info[B2B_INFO_GAP], info(B2B_IX_INFO_NORMAL:B2B_IX_INFO_NORMAL + 2) the
+!>    normal, counts(B2B_IX_COUNT_ACTIVE), totals(B2B_IX_TOTAL_ENERGY).
 !>  * A C handle is a derived type with a private pointer (type(b2b_params)),
 !>    null until created; destroy nulls it again. Copies of a handle share the
 !>    C object: destroy it once.
@@ -33,11 +38,24 @@
 !>    success) and errmsg (the message naming the problem, '' on success).
 !>    If ierr is absent and the call fails, the program stops with the message.
 !>  * On failure no output argument is changed (outputs are intent(inout)).
-!>  * Integer arguments are default integers and are converted to C int.
+!>  * Integer arguments and the integer constants are default integers; the
+!>    arguments are converted to C int. A host may compile this source with
+!>    a wider default integer (gfortran -fdefault-integer-8) and real
+!>    (-fdefault-real-8): the C interface keeps its explicit kinds, and a
+!>    value beyond C's int range is B2B_ERR_RANGE, never truncated. Arrays
+!>    the library reads or writes in place keep explicit kinds:
+!>    real(c_double) everywhere, integer(c_int) for the rows and cols of
+!>    b2b_model_tangent_coo, integer(c_int8_t)/integer(c_int64_t) for
+!>    b2b_model_save/_restore.
+!>  * Histories: hist_new (b2b_pair_eval) and hist_to
+!>    (b2b_pair_history_handover) must not share memory with hist_old /
+!>    hist_from (C allows it, Fortran does not: an intent(in) argument may not
+!>    change during the call). Sharing is B2B_ERR_RANGE and nothing is
+!>    written; to update h in place pass a copy, e.g. hist_old=(h), hist_new=h.
 module b2b
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_ptr, c_null_ptr, &
                                          c_null_char, c_loc, c_f_pointer, c_associated, &
-                                         c_int64_t, c_int8_t
+                                         c_int64_t, c_int8_t, c_intptr_t
   use, intrinsic :: iso_fortran_env, only: error_unit
   implicit none
   private
@@ -484,11 +502,15 @@ module b2b
 
 contains
 
-  !> English name of a status code (never empty).
+  !> English name of a status code (never empty; "unknown status" for a code
+  !> the library does not know, also one beyond C's int range).
   function b2b_strerror(status) result(msg)
     integer, intent(in) :: status
     character(len=:), allocatable :: msg
-    msg = c_string(c_b2b_strerror(int(status, c_int)))
+    integer(c_int) :: cstatus
+    cstatus = -1
+    if (fits_c_int(status)) cstatus = int(status, c_int)
+    msg = c_string(c_b2b_strerror(cstatus))
   end function
 
   !> Run-time release version of the library.
@@ -539,7 +561,11 @@ contains
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     type(c_ptr) :: px, pdx, pd2x, pt
     integer(c_int) :: st
+    logical :: ok
 
+    call check_ints(me, [character(len=10) :: 'kind', 'start_rule', 'end_rule'], &
+                    [kind, start_rule, end_rule], ok, ierr, errmsg)
+    if (.not. ok) return
     if (.not. shape_is(shape(patch), [3, 4])) then
       call finish_size(me, 'patch', shape(patch), [3, 4], ierr, errmsg)
       return
@@ -579,6 +605,7 @@ contains
     buf = c_null_char
     st = c_b2b_segment_eval(int(kind, c_int), int(start_rule, c_int), int(end_rule, c_int), &
                             patch, pt, xi, px, pdx, pd2x, buf, int(size(buf), c_int))
+    if (st /= B2B_OK) call fortran_terms(buf, '')
     call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
@@ -589,14 +616,19 @@ contains
     integer, intent(inout) :: n_segments
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_beam_segment_count'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st, cnseg
+    logical :: ok
+    call check_ints(me, [character(len=7) :: 'kind', 'n_nodes'], [kind, n_nodes], ok, ierr, &
+                    errmsg)
+    if (.not. ok) return
     buf = c_null_char
     cnseg = 0
     st = c_b2b_beam_segment_count(int(kind, c_int), int(n_nodes, c_int), c_flag(closed), &
                                   cnseg, buf, int(size(buf), c_int))
     if (st == B2B_OK) n_segments = cnseg
-    call finish('b2b_beam_segment_count', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> The patch of segment `segment` (1-based) of a beam: nodes(k) is the beam
@@ -613,9 +645,26 @@ contains
     character(len=*), intent(out), optional :: errmsg
     character(len=*), parameter :: me = 'b2b_beam_segment_patch'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
-    integer(c_int) :: st, cnodes(4), csr, cer
+    integer(c_int) :: st, cnodes(4), csr, cer, cnseg
+    logical :: ok
+    call check_ints(me, [character(len=7) :: 'kind', 'n_nodes', 'segment'], &
+                    [kind, n_nodes, segment], ok, ierr, errmsg)
+    if (.not. ok) return
     if (size(nodes) /= 4) then
       call finish_size(me, 'nodes', shape(nodes), [4], ierr, errmsg)
+      return
+    end if
+    ! The C message numbers segments from 0: check the range here, so that it
+    ! speaks of the caller's 1-based numbers. A beam the count rejects is
+    ! left to the C call, which reports it under this procedure's name.
+    buf = c_null_char
+    cnseg = 0
+    st = c_b2b_beam_segment_count(int(kind, c_int), int(n_nodes, c_int), c_flag(closed), &
+                                  cnseg, buf, int(size(buf), c_int))
+    if (st == B2B_OK .and. (segment < 1 .or. segment > cnseg)) then
+      call finish_text(me, int(B2B_ERR_RANGE, c_int), me // ': segment ' // &
+                       trim(int_text(segment)) // ' is out of range: this beam has segments 1 .. ' &
+                       // trim(int_text(int(cnseg))), ierr, errmsg)
       return
     end if
     buf = c_null_char
@@ -693,12 +742,16 @@ contains
     integer, intent(in) :: value
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_params_set_int'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st
+    logical :: ok
+    call check_ints(me, [character(len=5) :: 'value'], [value], ok, ierr, errmsg)
+    if (.not. ok) return
     buf = c_null_char
     st = c_b2b_params_set_int(params%ptr, trim(key) // c_null_char, int(value, c_int), buf, &
                               int(size(buf), c_int))
-    call finish('b2b_params_set_int', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> The value of the real option key (its default if it was never set).
@@ -776,26 +829,29 @@ contains
   !>   hist_old(:)          the pair's history: b2b_params_history_size doubles,
   !>                        all zero for a fresh pair
   !>   hist_new(:)          the updated history, of the same size as hist_old;
-  !>                        a distinct array (copy it into hist_old to commit)
+  !>                        a distinct array (copy it into hist_old to commit):
+  !>                        sharing memory with hist_old is B2B_ERR_RANGE (to
+  !>                        update h in place pass hist_old=(h), hist_new=h)
   !>   contact_status       B2B_CONTACT_* (a physical outcome, not an error)
-  !>   info(32)             B2B_INFO_*: the C entry info[k] is info(k + 1)
-  !>                        (with friction also the tangential force, slip,
-  !>                        B2B_FRICTION_* state and dissipation)
+  !>   info(32)             index it with B2B_IX_INFO_* (the C entry
+  !>                        info[B2B_INFO_GAP] is info(B2B_IX_INFO_GAP));
+  !>                        with friction also the tangential force, slip,
+  !>                        B2B_FRICTION_* state and dissipation
   !>   residual(24)         the contact contribution to the internal forces
   !>   tangent(ldk,24)      d residual/dX in rows 1..24, ldk = size(tangent,1)
   !>                        >= 24 (rows 25..ldk are not touched)
   !>   end_tangents(3,4)    host end tangents: A's first and last node, then
   !>                        B's; needed only where a rule is B2B_END_TANGENT
   !> An absent tangent is not computed (which is cheaper). With "friction" > 0
-  !> an active pair's tangent is not symmetric (info(B2B_INFO_SYMMETRIC + 1) = 0).
+  !> an active pair's tangent is not symmetric (info(B2B_IX_INFO_SYMMETRIC) = 0).
   subroutine b2b_pair_eval(params, segments, X, radii, hist_old, hist_new, contact_status, &
                            info, residual, tangent, end_tangents, ierr, errmsg)
     type(b2b_params), intent(in) :: params
     integer, intent(in), contiguous :: segments(:, :)
     real(c_double), intent(in), contiguous :: X(:, :)
     real(c_double), intent(in), contiguous :: radii(:)
-    real(c_double), intent(in), contiguous :: hist_old(:)
-    real(c_double), intent(inout), contiguous :: hist_new(:)
+    real(c_double), intent(in), contiguous, target :: hist_old(:)
+    real(c_double), intent(inout), contiguous, target :: hist_new(:)
     integer, intent(inout) :: contact_status
     real(c_double), intent(inout), contiguous :: info(:)
     real(c_double), intent(inout), contiguous :: residual(:)
@@ -808,11 +864,14 @@ contains
     type(c_ptr) :: pk, pt
     integer(c_int) :: st, cseg(6), cstatus, ldk
     real(c_double) :: h0(1), h1(1)
+    logical :: ok
 
     if (.not. shape_is(shape(segments), [3, 2])) then
       call finish_size(me, 'segments', shape(segments), [3, 2], ierr, errmsg)
       return
     end if
+    call check_int_matrix(me, 'segments', segments, ok, ierr, errmsg)
+    if (.not. ok) return
     if (.not. shape_is(shape(X), [3, 8])) then
       call finish_size(me, 'X', shape(X), [3, 8], ierr, errmsg)
       return
@@ -825,6 +884,13 @@ contains
       call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': hist_old and hist_new differ ' // &
                        'in size (' // trim(int_text(size(hist_old))) // ' and ' // &
                        trim(int_text(size(hist_new))) // ')', ierr, errmsg)
+      return
+    end if
+    call check_ints(me, [character(len=14) :: 'size(hist_old)'], [size(hist_old)], ok, ierr, &
+                    errmsg)
+    if (.not. ok) return
+    if (overlap(hist_old, hist_new)) then
+      call finish_alias(me, 'hist_new', 'hist_old', ierr, errmsg)
       return
     end if
     if (.not. shape_is(shape(info), [B2B_PAIR_INFO_LEN])) then
@@ -845,6 +911,9 @@ contains
                          ierr, errmsg)
         return
       end if
+      call check_ints(me, [character(len=15) :: 'size(tangent,1)'], [size(tangent, 1)], ok, &
+                      ierr, errmsg)
+      if (.not. ok) return
       pk = c_loc(tangent)
       ldk = int(size(tangent, 1), c_int)
     end if
@@ -870,6 +939,7 @@ contains
                            residual, pk, ldk, buf, int(size(buf), c_int))
     end if
     if (st == B2B_OK) contact_status = cstatus
+    if (st /= B2B_OK) call fortran_terms(buf, 'hist_old')
     call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
@@ -889,8 +959,9 @@ contains
   !>   hist_from(:)         the committed history of the old pair
   !>                        (b2b_params_history_size doubles)
   !>   hist_to(:)           the history for the new pair, of the same size; a
-  !>                        distinct array (to hand over in place, pass a copy
-  !>                        of hist_from)
+  !>                        distinct array: sharing memory with hist_from is
+  !>                        B2B_ERR_RANGE (to hand over h in place pass
+  !>                        hist_from=(h), hist_to=h)
   !>   from_end_tangents(3,2), to_end_tangents(3,2)
   !>                        host end tangents (first node, last node) of each
   !>                        segment; needed only where a rule is B2B_END_TANGENT
@@ -904,8 +975,8 @@ contains
     real(c_double), intent(in), contiguous :: from_X(:, :)
     integer, intent(in), contiguous :: to_segment(:)
     real(c_double), intent(in), contiguous :: to_X(:, :)
-    real(c_double), intent(in), contiguous :: hist_from(:)
-    real(c_double), intent(inout), contiguous :: hist_to(:)
+    real(c_double), intent(in), contiguous, target :: hist_from(:)
+    real(c_double), intent(inout), contiguous, target :: hist_to(:)
     real(c_double), intent(in), contiguous, target, optional :: from_end_tangents(:, :)
     real(c_double), intent(in), contiguous, target, optional :: to_end_tangents(:, :)
     integer, intent(out), optional :: ierr
@@ -915,6 +986,7 @@ contains
     type(c_ptr) :: ptf, ptt
     integer(c_int) :: st, cfrom(3), cto(3)
     real(c_double) :: h0(1), h1(1)
+    logical :: ok
 
     if (.not. shape_is(shape(from_segment), [3])) then
       call finish_size(me, 'from_segment', shape(from_segment), [3], ierr, errmsg)
@@ -936,6 +1008,17 @@ contains
       call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': hist_from and hist_to ' // &
                        'differ in size (' // trim(int_text(size(hist_from))) // ' and ' // &
                        trim(int_text(size(hist_to))) // ')', ierr, errmsg)
+      return
+    end if
+    call check_int_array(me, 'from_segment', from_segment, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_int_array(me, 'to_segment', to_segment, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=15) :: 'direction', 'size(hist_from)'], &
+                    [direction, size(hist_from)], ok, ierr, errmsg)
+    if (.not. ok) return
+    if (overlap(hist_from, hist_to)) then
+      call finish_alias(me, 'hist_to', 'hist_from', ierr, errmsg)
       return
     end if
     ptf = c_null_ptr
@@ -979,6 +1062,7 @@ contains
                                        int(direction, c_int), cfrom, from_X, ptf, cto, to_X, &
                                        ptt, h0, h1, 0_c_int, buf, int(size(buf), c_int))
     end if
+    if (st /= B2B_OK) call fortran_terms(buf, 'hist_from')
     call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
@@ -1033,8 +1117,15 @@ contains
     integer, intent(inout) :: beam
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_add_beam'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st, cbeam, cnodes(max(size(nodes), 1))
+    logical :: ok
+    call check_int_array(me, 'nodes', nodes, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=11) :: 'kind', 'group', 'size(nodes)'], &
+                    [kind, group, size(nodes)], ok, ierr, errmsg)
+    if (.not. ok) return
     buf = c_null_char
     cbeam = 0
     cnodes = 0
@@ -1043,7 +1134,7 @@ contains
                               radius, int(kind, c_int), int(group, c_int), cbeam, buf, &
                               int(size(buf), c_int))
     if (st == B2B_OK) beam = int(cbeam) + 1
-    call finish('b2b_model_add_beam', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> Groups ga and gb (host group numbers, either order; ga = gb for beams of
@@ -1054,12 +1145,16 @@ contains
     type(b2b_params), intent(in) :: params
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_set_group_pair'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st
+    logical :: ok
+    call check_ints(me, [character(len=2) :: 'ga', 'gb'], [ga, gb], ok, ierr, errmsg)
+    if (.not. ok) return
     buf = c_null_char
     st = c_b2b_model_set_group_pair(model%ptr, int(ga, c_int), int(gb, c_int), params%ptr, buf, &
                                     int(size(buf), c_int))
-    call finish('b2b_model_set_group_pair', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> Self-contact of beam (1-based) on or off; exclusion_length (optional,
@@ -1071,15 +1166,19 @@ contains
     real(c_double), intent(in), optional :: exclusion_length
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_set_self_contact'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st
     real(c_double) :: excl
+    logical :: ok
+    call check_ints(me, [character(len=4) :: 'beam'], [beam], ok, ierr, errmsg)
+    if (.not. ok) return
     excl = -1.0_c_double
     if (present(exclusion_length)) excl = exclusion_length
     buf = c_null_char
     st = c_b2b_model_set_self_contact(model%ptr, int(beam - 1, c_int), c_flag(on), excl, buf, &
                                       int(size(buf), c_int))
-    call finish('b2b_model_set_self_contact', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> Sets a real option of the model ("search_margin").
@@ -1103,12 +1202,16 @@ contains
     integer, intent(in) :: value
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_set_int'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st
+    logical :: ok
+    call check_ints(me, [character(len=5) :: 'value'], [value], ok, ierr, errmsg)
+    if (.not. ok) return
     buf = c_null_char
     st = c_b2b_model_set_int(model%ptr, trim(key) // c_null_char, int(value, c_int), buf, &
                              int(size(buf), c_int))
-    call finish('b2b_model_set_int', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> Builds the segment tables; the host has n_nodes nodes (numbers 1 .. n_nodes).
@@ -1117,12 +1220,16 @@ contains
     integer, intent(in) :: n_nodes
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_finalize'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st
+    logical :: ok
+    call check_ints(me, [character(len=7) :: 'n_nodes'], [n_nodes], ok, ierr, errmsg)
+    if (.not. ok) return
     buf = c_null_char
     st = c_b2b_model_finalize(model%ptr, int(n_nodes, c_int), buf, int(size(buf), c_int))
     if (st == B2B_OK) model%n_nodes = n_nodes
-    call finish('b2b_model_finalize', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> One Newton iteration: x(ldx, n) the current coordinates of the host's
@@ -1135,9 +1242,14 @@ contains
     logical, intent(in), optional :: want_tangent
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_update'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st, want
     real(c_double) :: dummy(3)
+    logical :: ok
+    call check_ints(me, [character(len=9) :: 'size(x,1)', 'size(x,2)'], [size(x, 1), size(x, 2)], &
+                    ok, ierr, errmsg)
+    if (.not. ok) return
     want = 1
     if (present(want_tangent)) want = c_flag(want_tangent)
     buf = c_null_char
@@ -1149,7 +1261,7 @@ contains
       st = c_b2b_model_update(model%ptr, dummy, int(size(x, 1), c_int), 0_c_int, want, buf, &
                               int(size(buf), c_int))
     end if
-    call finish('b2b_model_update', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> The number of active contacts of the last update.
@@ -1170,7 +1282,7 @@ contains
   !> Contact k (1 .. count) of the last update; every output is optional:
   !>   nodes(8)        host nodes (1-based) of A's patch slots, then B's; 0: no node
   !>   pair(4)         beam A, segment A, beam B, segment B (1-based)
-  !>   info(32)        as b2b_pair_eval: the C entry info[k] is info(k + 1)
+  !>   info(32)        as b2b_pair_eval: index it with B2B_IX_INFO_*
   !>   residual(24)    the element residual on the 24 coordinates of nodes
   !>   tangent(ldk,24) its tangent (ldk >= 24), if the update computed one
   subroutine b2b_model_get_contact(model, k, nodes, pair, info, residual, tangent, ierr, errmsg)
@@ -1186,6 +1298,9 @@ contains
     integer(c_int), target :: cnodes(8), cpair(4)
     type(c_ptr) :: pn, pp, pi, pr, pk
     integer(c_int) :: st, ldk
+    logical :: ok
+    call check_ints(me, [character(len=1) :: 'k'], [k], ok, ierr, errmsg)
+    if (.not. ok) return
     pn = c_null_ptr
     pp = c_null_ptr
     pi = c_null_ptr
@@ -1227,6 +1342,9 @@ contains
                          ierr, errmsg)
         return
       end if
+      call check_ints(me, [character(len=15) :: 'size(tangent,1)'], [size(tangent, 1)], ok, &
+                      ierr, errmsg)
+      if (.not. ok) return
       pk = c_loc(tangent)
       ldk = int(size(tangent, 1), c_int)
     end if
@@ -1248,16 +1366,16 @@ contains
     real(c_double), intent(inout), contiguous :: f(:)
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_add_residual'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st
     integer(c_int), allocatable :: ceq(:, :)
     real(c_double) :: dummy(1)
-    if (.not. eq_fits(model, eq)) then
-      call finish_text('b2b_model_add_residual', int(B2B_ERR_SIZE, c_int), 'b2b_model_add_residual: eq has shape (' // &
-                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' // &
-                       trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, errmsg)
-      return
-    end if
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=7) :: 'size(f)'], [size(f)], ok, ierr, errmsg)
+    if (.not. ok) return
     call c_equations(eq, ceq)
     buf = c_null_char
     if (size(f) > 0) then
@@ -1267,7 +1385,7 @@ contains
       st = c_b2b_model_add_residual(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, 0_c_int, &
                                     dummy, buf, int(size(buf), c_int))
     end if
-    call finish('b2b_model_add_residual', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> K(e_r, e_c) += the contacts' tangents (a dense matrix; n_eq = size(K, 2),
@@ -1278,21 +1396,22 @@ contains
     real(c_double), intent(inout), contiguous :: K(:, :)
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_add_tangent_dense'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st
     integer(c_int), allocatable :: ceq(:, :)
-    if (.not. eq_fits(model, eq)) then
-      call finish_text('b2b_model_add_tangent_dense', int(B2B_ERR_SIZE, c_int), 'b2b_model_add_tangent_dense: eq has shape (' // &
-                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' // &
-                       trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, errmsg)
-      return
-    end if
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=9) :: 'size(K,1)', 'size(K,2)'], [size(K, 1), size(K, 2)], &
+                    ok, ierr, errmsg)
+    if (.not. ok) return
     call c_equations(eq, ceq)
     buf = c_null_char
     st = c_b2b_model_add_tangent_dense(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
                                        int(size(K, 2), c_int), K, int(size(K, 1), c_int), buf, &
                                        int(size(buf), c_int))
-    call finish('b2b_model_add_tangent_dense', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> Adds the contacts' tangents into AB(ldab, n_eq), LAPACK's general band
@@ -1306,21 +1425,22 @@ contains
     real(c_double), intent(inout), contiguous :: AB(:, :)
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_add_tangent_banded'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     integer(c_int) :: st
     integer(c_int), allocatable :: ceq(:, :)
-    if (.not. eq_fits(model, eq)) then
-      call finish_text('b2b_model_add_tangent_banded', int(B2B_ERR_SIZE, c_int), 'b2b_model_add_tangent_banded: eq has shape (' // &
-                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' // &
-                       trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, errmsg)
-      return
-    end if
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=10) :: 'kl', 'ku', 'size(AB,1)', 'size(AB,2)'], &
+                    [kl, ku, size(AB, 1), size(AB, 2)], ok, ierr, errmsg)
+    if (.not. ok) return
     call c_equations(eq, ceq)
     buf = c_null_char
     st = c_b2b_model_add_tangent_banded(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
                                         int(size(AB, 2), c_int), int(kl, c_int), int(ku, c_int), &
                                         AB, int(size(AB, 1), c_int), buf, int(size(buf), c_int))
-    call finish('b2b_model_add_tangent_banded', st, buf, ierr, errmsg)
+    call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
   !> The tangent as COO triplets in the host's 1-based equation numbers
@@ -1340,6 +1460,7 @@ contains
     integer(c_int) :: st, cnnz, capacity
     integer(c_int), allocatable :: ceq(:, :)
     type(c_ptr) :: pr, pc, pv
+    logical :: ok
     pr = c_null_ptr
     pc = c_null_ptr
     pv = c_null_ptr
@@ -1350,19 +1471,18 @@ contains
                          'together (or none of them for the size query)', ierr, errmsg)
         return
       end if
-      capacity = int(min(size(rows), size(cols), size(values)), c_int)
+      ! capacity is a bound: arrays longer than C's int range offer that much.
+      capacity = int(min(size(rows), size(cols), size(values), int(huge(capacity))), c_int)
       if (capacity > 0) then
         pr = c_loc(rows)
         pc = c_loc(cols)
         pv = c_loc(values)
       end if
     end if
-    if (.not. eq_fits(model, eq)) then
-      call finish_text('b2b_model_tangent_coo', int(B2B_ERR_SIZE, c_int), 'b2b_model_tangent_coo: eq has shape (' // &
-                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' // &
-                       trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, errmsg)
-      return
-    end if
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=4) :: 'n_eq'], [n_eq], ok, ierr, errmsg)
+    if (.not. ok) return
     call c_equations(eq, ceq)
     buf = c_null_char
     cnnz = 0
@@ -1465,8 +1585,9 @@ contains
     call finish('b2b_model_restore', st, buf, ierr, errmsg)
   end subroutine
 
-  !> counts(16) (B2B_COUNT_*: the C entry counts[k] is counts(k + 1)) and
-  !> totals(8) (B2B_TOTAL_*) of the last update; either optional.
+  !> counts(16) and totals(8) of the last update, either optional: index them
+  !> with B2B_IX_COUNT_* and B2B_IX_TOTAL_* (counts(B2B_IX_COUNT_ACTIVE) is the
+  !> C counts[B2B_COUNT_ACTIVE]).
   subroutine b2b_model_stats(model, counts, totals, ierr, errmsg)
     type(b2b_model), intent(in) :: model
     integer, intent(inout), optional :: counts(:)
@@ -1498,13 +1619,30 @@ contains
     call finish(me, st, buf, ierr, errmsg)
   end subroutine
 
-  !> Whether eq(ldeq, n) covers every node of a finalized model (ldeq >= 3).
-  !> An unfinalized model passes: the library reports its state.
-  logical function eq_fits(model, eq)
+  !> ok = .true. if eq(ldeq, n) covers every node of a finalized model
+  !> (ldeq >= 3; an unfinalized model passes: the library reports its state)
+  !> and each equation number fits a C int. Otherwise reports the problem
+  !> (B2B_ERR_SIZE, B2B_ERR_RANGE) for procedure procname.
+  subroutine check_equations(procname, model, eq, ok, ierr, errmsg)
+    character(len=*), intent(in) :: procname
     type(b2b_model), intent(in) :: model
     integer, intent(in) :: eq(:, :)
-    eq_fits = model%n_nodes < 0 .or. (size(eq, 1) >= 3 .and. size(eq, 2) >= model%n_nodes)
-  end function
+    logical, intent(out) :: ok
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    ok = model%n_nodes < 0 .or. (size(eq, 1) >= 3 .and. size(eq, 2) >= model%n_nodes)
+    if (.not. ok) then
+      call finish_text(procname, int(B2B_ERR_SIZE, c_int), procname // ': eq has shape (' // &
+                       shape_text(shape(eq)) // '), expected (ldeq,n) with ldeq >= 3 and n >= ' &
+                       // trim(int_text(model%n_nodes)) // ' (the nodes of the model)', ierr, &
+                       errmsg)
+      return
+    end if
+    call check_ints(procname, [character(len=10) :: 'size(eq,1)', 'size(eq,2)'], &
+                    [size(eq, 1), size(eq, 2)], ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_int_matrix(procname, 'eq', eq, ok, ierr, errmsg)
+  end subroutine
 
   !> The host's equation numbers as C ints (a copy: the host's integers may
   !> be of another kind).
@@ -1567,6 +1705,180 @@ contains
     end do
     call finish(procname, st, buf, ierr, errmsg)
   end subroutine
+
+  !> Whether a default integer is a C int: always, unless the host compiled
+  !> this module with a wider default integer (-fdefault-integer-8). The
+  !> range is symmetric, so that a 1-based value minus 1 is a C int too.
+  elemental logical function fits_c_int(v)
+    integer, intent(in) :: v
+    fits_c_int = v >= -huge(0_c_int) .and. v <= huge(0_c_int)
+  end function
+
+  !> ok = .true. if every values(i) fits a C int; else reports B2B_ERR_RANGE
+  !> for the first that does not, names(i) being its argument.
+  subroutine check_ints(procname, names, values, ok, ierr, errmsg)
+    character(len=*), intent(in) :: procname, names(:)
+    integer, intent(in) :: values(:)
+    logical, intent(out) :: ok
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    integer :: i
+    ok = .true.
+    do i = 1, size(values)
+      if (.not. fits_c_int(values(i))) then
+        ok = .false.
+        call finish_range(procname, trim(names(i)), values(i), ierr, errmsg)
+        return
+      end if
+    end do
+  end subroutine
+
+  !> check_ints for the elements of an array argument a(:).
+  subroutine check_int_array(procname, argname, a, ok, ierr, errmsg)
+    character(len=*), intent(in) :: procname, argname
+    integer, intent(in) :: a(:)
+    logical, intent(out) :: ok
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    integer :: i
+    ok = .true.
+    do i = 1, size(a)
+      if (.not. fits_c_int(a(i))) then
+        ok = .false.
+        call finish_range(procname, argname // '(' // trim(int_text(i)) // ')', a(i), ierr, &
+                          errmsg)
+        return
+      end if
+    end do
+  end subroutine
+
+  !> check_ints for the elements of an array argument a(:, :).
+  subroutine check_int_matrix(procname, argname, a, ok, ierr, errmsg)
+    character(len=*), intent(in) :: procname, argname
+    integer, intent(in) :: a(:, :)
+    logical, intent(out) :: ok
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    integer :: i, j
+    ok = .true.
+    do j = 1, size(a, 2)
+      do i = 1, size(a, 1)
+        if (.not. fits_c_int(a(i, j))) then
+          ok = .false.
+          call finish_range(procname, argname // '(' // trim(int_text(i)) // ',' // &
+                            trim(int_text(j)) // ')', a(i, j), ierr, errmsg)
+          return
+        end if
+      end do
+    end do
+  end subroutine
+
+  !> Reports an integer argument beyond C's int range as B2B_ERR_RANGE.
+  subroutine finish_range(procname, argname, v, ierr, errmsg)
+    character(len=*), intent(in) :: procname, argname
+    integer, intent(in) :: v
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    call finish_text(procname, int(B2B_ERR_RANGE, c_int), procname // ': ' // argname // &
+                     ' = ' // trim(int_text(v)) // ' is beyond the range of a C int (+-' // &
+                     trim(int_text(int(huge(0_c_int)))) // ')', ierr, errmsg)
+  end subroutine
+
+  !> Whether two arrays share memory, even in part (arrays of no elements
+  !> share none).
+  logical function overlap(a, b)
+    real(c_double), intent(in), contiguous, target :: a(:), b(:)
+    integer(c_intptr_t) :: pa, pb, na, nb
+    overlap = .false.
+    if (size(a) == 0 .or. size(b) == 0) return
+    pa = transfer(c_loc(a), pa)
+    pb = transfer(c_loc(b), pb)
+    na = size(a, kind=c_intptr_t) * (storage_size(a, kind=c_intptr_t) / 8)
+    nb = size(b, kind=c_intptr_t) * (storage_size(b, kind=c_intptr_t) / 8)
+    overlap = pa < pb + nb .and. pb < pa + na
+  end function
+
+  !> Reports an output array that shares memory with an input array.
+  subroutine finish_alias(procname, outname, inname, ierr, errmsg)
+    character(len=*), intent(in) :: procname, outname, inname
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    call finish_text(procname, int(B2B_ERR_RANGE, c_int), procname // ': ' // outname // &
+                     ' shares memory with ' // inname // ' (the same array?), which Fortran ' // &
+                     'does not allow; pass a distinct array, or ' // inname // '=(h), ' // &
+                     outname // '=h to update h in place', ierr, errmsg)
+  end subroutine
+
+  !> Rewrites a message of the C curve and pair functions in the terms of
+  !> the Fortran call: an end_tangents argument the caller left out is
+  !> "absent", not "NULL"; and for the history argument hist (if not ''),
+  !> "<hist>[k]" and "entry k" (0-based) become "<hist>(k+1)", and the C
+  !> length argument "hist_len" becomes "size(<hist>)".
+  subroutine fortran_terms(buf, hist)
+    character(kind=c_char), intent(inout) :: buf(:)
+    character(len=*), intent(in) :: hist
+    character(len=:), allocatable :: msg
+    integer :: i
+    msg = replace_all(c_chars(buf), 'end_tangents is NULL', 'end_tangents is absent')
+    if (len(hist) > 0) then
+      msg = renumber(msg, hist // '[', hist // '(', ']', ')')
+      msg = renumber(msg, 'but entry ', 'but ' // hist // '(', '', ')')
+      msg = replace_all(msg, 'hist_len is ', 'size(' // hist // ') is ')
+    end if
+    buf = c_null_char
+    do i = 1, min(len(msg), size(buf) - 1)
+      buf(i) = msg(i:i)
+    end do
+  end subroutine
+
+  !> msg with every old replaced by new.
+  function replace_all(msg, old, new) result(out)
+    character(len=*), intent(in) :: msg, old, new
+    character(len=:), allocatable :: out
+    integer :: i, at
+    out = ''
+    i = 1
+    do
+      at = index(msg(i:), old)
+      if (at == 0) exit
+      out = out // msg(i:i + at - 2) // new
+      i = i + at - 1 + len(old)
+    end do
+    out = out // msg(i:)
+  end function
+
+  !> msg with every "<key><k><close>" (k a non-negative integer) replaced by
+  !> "<new_key><k+1><new_close>".
+  function renumber(msg, key, new_key, close, new_close) result(out)
+    character(len=*), intent(in) :: msg, key, new_key, close, new_close
+    character(len=:), allocatable :: out
+    integer :: i, at, j, k, n, stat
+    out = ''
+    i = 1
+    do
+      at = index(msg(i:), key)
+      if (at == 0) exit
+      at = i + at - 1
+      j = at + len(key)
+      k = j
+      do while (k <= len(msg))
+        if (verify(msg(k:k), '0123456789') /= 0) exit
+        k = k + 1
+      end do
+      stat = 1
+      if (k > j .and. k - j < 10) then
+        if (msg(k:min(k + len(close) - 1, len(msg))) == close) read (msg(j:k - 1), *, iostat=stat) n
+      end if
+      if (stat == 0) then
+        out = out // msg(i:at - 1) // new_key // trim(int_text(n + 1)) // new_close
+        i = k + len(close)
+      else
+        out = out // msg(i:j - 1)
+        i = j
+      end if
+    end do
+    out = out // msg(i:)
+  end function
 
   logical function shape_is(got, want)
     integer, intent(in) :: got(:), want(:)

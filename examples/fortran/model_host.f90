@@ -99,7 +99,7 @@ program model_host
       sets(it) = n_contacts
       if (n_contacts > 0) then
         call b2b_model_get_contact(model, 1, pair=pair, info=info)
-        sets(it) = 100000 * n_contacts + 100 * pair(2) + nint(info(B2B_INFO_FRICTION_STATE + 1))
+        sets(it) = 100000 * n_contacts + 100 * pair(2) + nint(info(B2B_IX_INFO_FRICTION_STATE))
       end if
       if (norms(it) < 1.0d-9) then
         converged = .true.
@@ -118,8 +118,8 @@ program model_host
       exit
     end if
     call b2b_model_get_contact(model, 1, pair=pair, info=info)
-    fn = info(B2B_INFO_NORMAL_FORCE + 1)
-    tn = norm2(info(B2B_INFO_TANGENTIAL_FORCE + 1:B2B_INFO_TANGENTIAL_FORCE + 3))
+    fn = info(B2B_IX_INFO_NORMAL_FORCE)
+    tn = norm2(info(B2B_IX_INFO_TANGENTIAL_FORCE:B2B_IX_INFO_TANGENTIAL_FORCE + 2))
     ! the last Newton step clear of round-off squares the residual
     last = it
     do while (last >= 0)

@@ -296,7 +296,7 @@ contains
     call reset()
     call b2b_segment_eval(B2B_CURVE_HERMITE_MIDPOINT, B2B_END_REFLECT, B2B_END_REFLECT, patch0, &
                           xi, x=x, dx=dx, d2x=d2x, ierr=ierr, errmsg=msg)
-    call expect_failure('midpoint REFLECT/REFLECT', B2B_ERR_RANGE, 'midpoint')
+    call expect_failure('midpoint REFLECT/REFLECT', B2B_ERR_RANGE, 'B2B_CURVE_HERMITE_MIDPOINT')
 
     ! ierr without errmsg.
     call reset()

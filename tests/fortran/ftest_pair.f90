@@ -102,6 +102,8 @@ contains
     call check(B2B_ERR_UNKNOWN_KEY == 11, 'B2B_ERR_UNKNOWN_KEY == 11')
     call check(B2B_LAW_LINEAR == 0, 'B2B_LAW_LINEAR == 0')
     call check(B2B_LAW_QUADRATIC == 1, 'B2B_LAW_QUADRATIC == 1')
+    ! Laws are appended: the count only grows past the last fixed value.
+    call check(B2B_LAW_COUNT >= B2B_LAW_QUADRATIC + 1, 'B2B_LAW_COUNT >= 2')
     call check(B2B_CONTACT_OPEN == 0, 'B2B_CONTACT_OPEN == 0')
     call check(B2B_CONTACT_ACTIVE == 1, 'B2B_CONTACT_ACTIVE == 1')
     call check(B2B_CONTACT_OUTSIDE == 2, 'B2B_CONTACT_OUTSIDE == 2')

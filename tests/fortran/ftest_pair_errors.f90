@@ -283,8 +283,8 @@ contains
     call b2b_params_set_real(q, 'parallel_angle', 90.0_c_double, ierr, msg)
     call expect_status('parallel_angle 90', B2B_ERR_RANGE, 'parallel_angle')
     call reset()
-    call b2b_params_set_int(q, 'law', 2, ierr, msg)
-    call expect_status('law 2', B2B_ERR_UNKNOWN_KIND, 'law')
+    call b2b_params_set_int(q, 'law', B2B_LAW_COUNT, ierr, msg)
+    call expect_status('law B2B_LAW_COUNT', B2B_ERR_UNKNOWN_KIND, 'law')
     call reset()
     call b2b_params_set_int(q, 'warm_start', 2, ierr, msg)
     call expect_status('warm_start 2', B2B_ERR_RANGE, 'warm_start')
@@ -392,19 +392,21 @@ contains
     call reset()
     call b2b_pair_eval(p, segs0, X0, radii0, h_long, h_long2, status, info, residual, &
                        tangent, ierr=ierr, errmsg=msg)
-    call expect_failure('history of length n + 1', B2B_ERR_SIZE, 'hist_len')
+    call expect_failure('history of length n + 1', B2B_ERR_SIZE, &
+                        'size(hist_old) is ' // int_str(n + 1))
     call check(all_equal_to(h_long2, sentinel), 'history of length n + 1: hist_new untouched')
     h_short = 0
     h_long2 = sentinel
     call reset()
     call b2b_pair_eval(p, segs0, X0, radii0, h_short, h_long2(1:n - 1), status, info, &
                        residual, tangent, ierr=ierr, errmsg=msg)
-    call expect_failure('history of length n - 1', B2B_ERR_SIZE, 'hist_len')
+    call expect_failure('history of length n - 1', B2B_ERR_SIZE, &
+                        'size(hist_old) is ' // int_str(n - 1))
     call check(all_equal_to(h_long2, sentinel), 'history of length n - 1: hist_new untouched')
     call reset()
     call b2b_pair_eval(p, segs0, X0, radii0, h_empty, h_empty2, status, info, residual, &
                        tangent, ierr=ierr, errmsg=msg)
-    call expect_failure('history of length 0', B2B_ERR_SIZE, 'hist_len')
+    call expect_failure('history of length 0', B2B_ERR_SIZE, 'size(hist_old) is 0')
 
     ! hist_old and hist_new of different sizes: the module's check.
     h_long2 = sentinel
