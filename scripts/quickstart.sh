@@ -18,6 +18,13 @@
 #              whole suite (build-clang/; gfortran stays the Fortran compiler)
 #   memcheck   the suite under valgrind memcheck (RelWithDebInfo build in
 #              build-memcheck/; valgrind)
+#   conly      the C library alone (build-pkg-conly/): no Fortran compiler,
+#              Check or LAPACK as far as CMake knows; builds, installs, and
+#              the README's C consumer commands work against the install
+#   static     BUILD_SHARED_LIBS=OFF (build-pkg-static/): a static libb2b,
+#              and the whole suite, the consumer test among it
+#   doc        the API reference by Doxygen, warnings as errors
+#              (build-pkg-doc/; doxygen)
 # It first installs the Debian packages it needs if any is missing (with sudo
 # when not run as root), so it works as is on a fresh Debian 12 machine.
 set -euo pipefail
@@ -25,9 +32,9 @@ cd "$(dirname "$0")/.."
 
 mode=${1:-}
 case "$mode" in
-  demo | study | test | sanitize | abi | tsan | clang | memcheck) ;;
+  demo | study | test | sanitize | abi | tsan | clang | memcheck | conly | static | doc) ;;
   *)
-    echo "usage: $0 demo|study|test|sanitize|abi|tsan|clang|memcheck" >&2
+    echo "usage: $0 demo|study|test|sanitize|abi|tsan|clang|memcheck|conly|static|doc" >&2
     exit 2
     ;;
 esac
@@ -38,6 +45,7 @@ case "$mode" in
   tsan) packages+=(clang libomp-14-dev libclang-rt-14-dev) ;;
   clang) packages+=(clang) ;;
   memcheck) packages+=(valgrind) ;;
+  doc) packages+=(doxygen) ;;
 esac
 missing=()
 for p in "${packages[@]}"; do
@@ -128,17 +136,12 @@ case "$mode" in
     # lost block makes one exit 1, i.e. fail (tests/memcheck.supp: what is
     # suppressed, and why). CK_FORK=no: Check runs the tests in the process
     # valgrind watches. Not run under valgrind:
-    #  - consumer_install and the abi tests: they run cmake, compilers, nm,
-    #    readelf and abidiff, not b2b code;
+    #  - consumer_install, the abi tests and the docs tests (readme_snippets,
+    #    cited_paths): they run cmake, compilers, nm, readelf, abidiff and
+    #    shell scripts, not b2b code (the snippets' few calls are the suites');
     #  - fortran_stop_without_ierr*: they end in the module's error stop by
     #    design, so the message it was building is reported as lost, and
     #    they pass by a non-zero exit (WILL_FAIL) anyway;
-    #  - check_curve_bad_input and check_pair_bad_input: 260 s and 630 s
-    #    under valgrind (4 s and 5 s without), since Check writes a record
-    #    to its temporary file for every passed assertion and these suites
-    #    pass about 9 and 11 million of them in loops (one system call each,
-    #    expensive under valgrind). They run under ASan+UBSan in the sanitize
-    #    step; include them here once they assert less often;
     #  - demo_trade_table_short (16 solves of the demo host) and
     #    demo_contact_tangent_many_contacts (finite differences of the host's
     #    500-equation assembly, two assemblies per column): 20 to 30 min each
@@ -150,6 +153,45 @@ case "$mode" in
       "-DMEMORYCHECK_COMMAND_OPTIONS=--error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,possible --show-leak-kinds=definite,possible --num-callers=30"
     cmake --build build-memcheck -j "$jobs"
     CK_FORK=no ctest --test-dir build-memcheck --output-on-failure -j "$jobs" -T memcheck \
-      -LE 'consumer|abi' -E 'stop_without_ierr|^check_(curve|pair)_bad_input$|^demo_trade_table_short$|^demo_contact_tangent_many_contacts$'
+      -LE 'consumer|abi|docs' -E 'stop_without_ierr|^demo_trade_table_short$|^demo_contact_tangent_many_contacts$'
+    ;;
+  conly)
+    # The C library as a packager without a Fortran compiler, Check or LAPACK
+    # builds it: Fortran is never enabled, the tests (the only users of
+    # Check) are off, and LAPACK is disabled, so the examples that need it
+    # are left out. The cache shows that CMake looked for none of the three.
+    dir=build-pkg-conly
+    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_FORTRAN=OFF \
+      -DBUILD_TESTING=OFF -DCMAKE_DISABLE_FIND_PACKAGE_LAPACK=ON
+    if grep -E '^(CMAKE_Fortran_COMPILER|pkgcfg_lib_CHECK_|LAPACK_|BLAS_)' "$dir/CMakeCache.txt"; then
+      echo "quickstart conly: CMake looked for Fortran, Check or LAPACK (cache entries above)" >&2
+      exit 1
+    fi
+    cmake --build "$dir" -j "$jobs"
+    # ctest has no tests here (BUILD_TESTING=OFF), so the consumer test runs
+    # directly: the README's install and C consumer commands (its Fortran
+    # ones are skipped, and no Fortran file may be installed).
+    cache() { sed -n "s/^$1:[A-Z]*=//p" "$dir/CMakeCache.txt"; }
+    sh tests/consumer/run_consumer_test.sh "--cmake=$(command -v cmake)" "--build-dir=$dir" \
+      --readme=README.md "--work-dir=$PWD/$dir/consumer" --source-dir=tests/consumer \
+      "--libdir=$(cache CMAKE_INSTALL_LIBDIR)" "--generator=$(cache CMAKE_GENERATOR)" \
+      "--c-compiler=$(cache CMAKE_C_COMPILER)" --fortran-compiler= --shared=ON \
+      "--pkg-config=$(command -v pkg-config)"
+    ;;
+  static)
+    # A static libb2b: the whole suite, with consumer_install linking C and
+    # Fortran hosts through the CMake package and pkg-config.
+    cmake -S . -B build-pkg-static -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF
+    cmake --build build-pkg-static -j "$jobs"
+    ctest --test-dir build-pkg-static --output-on-failure -j "$jobs"
+    ;;
+  doc)
+    # The API reference of the C headers (cmake/B2BDoc.cmake); any Doxygen
+    # warning fails the target. Nothing is compiled: a C-only configure
+    # (for the generated b2b_version.h) and Doxygen.
+    cmake -S . -B build-pkg-doc -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_FORTRAN=OFF \
+      -DBUILD_TESTING=OFF -DB2B_BUILD_EXAMPLES=OFF
+    cmake --build build-pkg-doc --target doc
+    echo "quickstart doc: $PWD/build-pkg-doc/doc/api/html/index.html"
     ;;
 esac
