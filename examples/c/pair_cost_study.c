@@ -151,6 +151,19 @@ static double trial(const bench_t *b, int v, int reps) {
 
 static double worst_ad; /* largest relative difference analytic / AD tangent */
 
+/* The parts of a bench that do not depend on the configurations: the
+ * parameters, two segments of kind k, the radii and the history length. */
+static void init_bench(bench_t *b, const b2b_params *params, int k) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  memset(b, 0, sizeof *b);
+  b->params = params;
+  const int seg[6] = {kKinds[k], 0, 0, kKinds[k], 0, 0};
+  memcpy(b->segments, seg, sizeof seg);
+  b->radii[0] = 0.2;
+  b->radii[1] = 0.15;
+  check(b2b_params_history_size(params, &b->hist_len, msg, sizeof msg), "history size", msg);
+}
+
 /* Sets up the crossings of kind k and checks that every one is an active
  * contact whose analytic tangent agrees with the differences (a guard
  * against timing the wrong thing). With slide != 0 each crossing first gets
@@ -160,13 +173,7 @@ static double worst_ad; /* largest relative difference analytic / AD tangent */
  * guard, 1e-10). Returns 0 on failure. */
 static int setup(bench_t *b, const b2b_params *params, int k, double slide) {
   char msg[B2B_ERRMSG_LEN] = "";
-  memset(b, 0, sizeof *b);
-  b->params = params;
-  const int seg[6] = {kKinds[k], 0, 0, kKinds[k], 0, 0};
-  memcpy(b->segments, seg, sizeof seg);
-  b->radii[0] = 0.2;
-  b->radii[1] = 0.15;
-  check(b2b_params_history_size(params, &b->hist_len, msg, sizeof msg), "history size", msg);
+  init_bench(b, params, k);
   for (int j = 0; j < N_CONFIGS; ++j) {
     make_config(j, b->X[j]);
     if (slide != 0.0) {
@@ -225,13 +232,7 @@ static int setup(bench_t *b, const b2b_params *params, int k, double slide) {
  * element must report OUTSIDE, or 10 element lengths above A, OPEN. */
 static int setup_noncontact(bench_t *b, const b2b_params *params, int k, int outside) {
   char msg[B2B_ERRMSG_LEN] = "";
-  memset(b, 0, sizeof *b);
-  b->params = params;
-  const int seg[6] = {kKinds[k], 0, 0, kKinds[k], 0, 0};
-  memcpy(b->segments, seg, sizeof seg);
-  b->radii[0] = 0.2;
-  b->radii[1] = 0.15;
-  check(b2b_params_history_size(params, &b->hist_len, msg, sizeof msg), "history size", msg);
+  init_bench(b, params, k);
   for (int j = 0; j < N_CONFIGS; ++j) {
     make_config(j, b->X[j]);
     double shift[3] = {0, 0, 10.0};
