@@ -25,6 +25,8 @@
 #              and the whole suite, the consumer test among it
 #   doc        the API reference by Doxygen, warnings as errors
 #              (build-pkg-doc/; doxygen)
+#   fuzz       the libFuzzer targets (tests/fuzz, clang, ASan+UBSan) for a
+#              bounded time each (scripts/fuzz.sh short)
 # It first installs the Debian packages it needs if any is missing (with sudo
 # when not run as root), so it works as is on a fresh Debian 12 machine.
 set -euo pipefail
@@ -32,9 +34,9 @@ cd "$(dirname "$0")/.."
 
 mode=${1:-}
 case "$mode" in
-  demo | study | test | sanitize | abi | tsan | clang | memcheck | conly | static | doc) ;;
+  demo | study | test | sanitize | abi | tsan | clang | memcheck | conly | static | doc | fuzz) ;;
   *)
-    echo "usage: $0 demo|study|test|sanitize|abi|tsan|clang|memcheck|conly|static|doc" >&2
+    echo "usage: $0 demo|study|test|sanitize|abi|tsan|clang|memcheck|conly|static|doc|fuzz" >&2
     exit 2
     ;;
 esac
@@ -184,6 +186,13 @@ case "$mode" in
     cmake -S . -B build-pkg-static -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF
     cmake --build build-pkg-static -j "$jobs"
     ctest --test-dir build-pkg-static --output-on-failure -j "$jobs"
+    ;;
+  fuzz)
+    # The libFuzzer targets of tests/fuzz for a bounded time each, on their
+    # seed corpora and the reproducers of every defect found (clang, ASan +
+    # UBSan; scripts/fuzz.sh installs what it needs; FUZZ_SECONDS per target,
+    # default 60). The long campaign: scripts/fuzz.sh long.
+    scripts/fuzz.sh short
     ;;
   doc)
     # The API reference of the C headers (cmake/B2BDoc.cmake); any Doxygen

@@ -146,7 +146,9 @@
  * unfinalized b2b_params), B2B_ERR_RANGE (a node number out of range or
  * repeated within a beam, a radius <= 0 or beyond B2B_COORD_MAX, a group < 0,
  * a coordinate beyond B2B_COORD_MAX, an equation number beyond n_eq, a
- * restore buffer), B2B_ERR_NONFINITE (radius, coordinates, option values),
+ * restore buffer; in an update, a contact whose force, energy or tangent
+ * overflows, or whose terms make the model's totals overflow: the model is
+ * then unchanged), B2B_ERR_NONFINITE (radius, coordinates, option values),
  * B2B_ERR_SIZE (a beam of too few nodes, ldx < 3, n_cols < n_nodes, ldeq < 3,
  * ldk, ldab, capacity, a replacement parameter set of another history
  * length, a restore size < 0), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a

@@ -33,8 +33,9 @@ namespace {
 constexpr int kChunk = 32;  // pairs per parallel work item
 // Below these sizes a parallel region costs more than it saves (starting a
 // team, and idle threads spinning on a busy machine): run on one thread.
-constexpr int kParallelPairs = 1024;
-constexpr int kParallelSegments = 2048;
+// (Unused without OpenMP.)
+[[maybe_unused]] constexpr int kParallelPairs = 1024;
+[[maybe_unused]] constexpr int kParallelSegments = 2048;
 
 // Direction in which the contact point left a segment: +1 beyond its end
 // (including the end joint, which belongs to the next segment), -1 before
