@@ -885,10 +885,23 @@ static void gen_intersection(void) {
  * reference's at 1e-4 L and 2e-4 L extrapolated linearly to rho (good to
  * about K'' (1e-4 L)^2, 1e-6 on curved pairs), and the criterion is at
  * least 2e-6. */
+/* Whether long double arithmetic really carries more digits than double
+ * at run time. Under valgrind (the memcheck step) it is emulated with
+ * double's 53 bits, and a long-double reference that forms d / rho is then
+ * no better than the library below rho = 1e-2 L. */
+static int extended_precision(void) {
+  volatile long double one = 1.0L, tiny = 1e-19L;
+  return one + tiny != one;
+}
+
 static void gen_near_intersection(void) {
   tst_rng rng;
   tst_rng_seed(&rng, 12010);
   const double rhos[] = {1e-1, 1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14};
+  const int extended = extended_precision();
+  if (!extended)
+    printf("    (long double is not extended at run time, e.g. under valgrind: the rows "
+           "below 1e-2 L check outcomes and finiteness only)\n");
   for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
     for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb) {
       config c0;
@@ -935,6 +948,7 @@ static void gen_near_intersection(void) {
            * growing with L / rho, as a rounding error would) */
           c.tol_k = fmax(c.tol_k, 2e-6);
         }
+        if (!extended && rho < 1e-2) c.tol_k = c.tol_r = HUGE_VAL;
         c.allowed = rho < 1e-13 ? OK_(B2B_CONTACT_NO_NORMAL) : OK_(B2B_CONTACT_ACTIVE);
         name(&c, "axes %.0e L apart", rho);
         judge(&c, NULL);
