@@ -71,9 +71,11 @@
  * ldx >= 3, so FEAP's x(ndm, numnp) works as is); n_cols >= n_nodes. Only
  * nodes of beams are read (each must be finite and within B2B_COORD_MAX).
  *   Broad phase: boxes around each segment (its Hermite control polygon,
- *     which contains the curve) grown by r + g0/2 + 4s/3, in a bounding-
- *     volume hierarchy over their Morton order (O(n log n), no global box or
- *     cell size to set); rebuilt only when some node has moved more than s/2
+ *     which contains the curve) grown by r + g0/2 + 4s/3, in Boost.Geometry's
+ *     packed R-tree when b2b was built with the Boost headers, else in b2b's
+ *     bounding-volume hierarchy over their Morton order (both O(n log n), no
+ *     global box or cell size to set; the same candidates either way);
+ *     rebuilt only when some node has moved more than s/2
  *     since the last build, so that most iterations reuse the candidates.
  *     g0: the largest regularization gap of the group pairs (0 without the
  *     quadratic law).

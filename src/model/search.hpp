@@ -8,9 +8,11 @@
 //  - a bounding-volume hierarchy over the boxes sorted by the Morton code of
 //    their centres (taken in the boxes' own bounding box): the fallback.
 // Either way the boxes are queried in Morton order, so consecutive queries
-// walk the same part of the tree (at 10^6 boxes, index order cost twice the
-// time per pair in cache misses), and each query's pairs are put in place
-// by the lower box index: the result comes out sorted without a global sort.
+// walk the same part of the tree, and each query's partners are appended in
+// the order of the lower box index: the result comes out sorted without a
+// global sort of all pairs (175 million at 10^6 bundle segments; the bundle
+// search at that size went from 31.9 to 20.2 s with the BVH, 15.4 to 13.8 s
+// with the R-tree, examples/c/model_scaling.cpp).
 #pragma once
 
 #include <cstdint>
