@@ -39,4 +39,13 @@ constexpr bool in_value_order(const Entry (&table)[N]) {
   return true;
 }
 
+// True if every entry's internal id (an enum class) has the entry's public
+// value: the table and the internal enumeration agree.
+template <class Entry, std::size_t N>
+constexpr bool ids_match_values(const Entry (&table)[N]) {
+  for (const Entry& e : table)
+    if (static_cast<int>(e.id) != e.value) return false;
+  return true;
+}
+
 }  // namespace b2b

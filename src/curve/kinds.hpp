@@ -54,12 +54,7 @@ inline constexpr KindInfo kKinds[] = {
      false, true},
 };
 
-constexpr bool kinds_match_ids() {
-  for (const KindInfo& k : kKinds)
-    if (static_cast<int>(k.id) != k.value) return false;
-  return true;
-}
-static_assert(in_value_order(kKinds) && kinds_match_ids(),
+static_assert(in_value_order(kKinds) && ids_match_values(kKinds),
               "kKinds lists B2B_CURVE_* in value order, each with its Kind");
 static_assert(sizeof kKinds / sizeof kKinds[0] == B2B_CURVE_KIND_COUNT,
               "kKinds has one entry per curve kind (B2B_CURVE_KIND_COUNT)");

@@ -31,6 +31,10 @@ bool owns(double t, double speed, double length, bool beam_ends_here) {
   return t > -1.0 && t < 1.0;
 }
 
+// A centreline (almost) stops: its speed |dx/dxi| below 1% of a straight
+// segment's (half its chord length), a cusp (b2b_pair.h, PARALLEL).
+bool at_cusp(double speed, double chord_length) { return !(speed > 0.005 * chord_length); }
+
 }  // namespace
 
 int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentRef& B,
@@ -91,7 +95,7 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     sb.point(cp.eta, nullptr, db, nullptr);
     cross3(da, db, c);
     const double sa_speed = norm3(da), sb_speed = norm3(db), speeds = sa_speed * sb_speed;
-    const bool cusp = !(sa_speed > 0.005 * len_a) || !(sb_speed > 0.005 * len_b);
+    const bool cusp = at_cusp(sa_speed, len_a) || at_cusp(sb_speed, len_b);
     if (cusp || !(norm3(c) > params.sin_parallel_angle * speeds)) {
       info[B2B_INFO_ANGLE] =
           speeds > 0.0 ? std::asin(std::fmin(1.0, norm3(c) / speeds)) * 180.0 / kPi : 0.0;
@@ -126,7 +130,7 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     du[i] = k.d[i] * inv_unit;
   }
   const double na = norm3(ta), nb = norm3(tb);
-  if (!(na * unit > 0.005 * len_a) || !(nb * unit > 0.005 * len_b)) {
+  if (at_cusp(na * unit, len_a) || at_cusp(nb * unit, len_b)) {
     // A cusp: the centreline stops and turns back at (or next to: speed
     // below 1% of its chord's) the closest point, so there is neither a
     // crossing angle nor a unique normal (b2b_pair.h); the point itself is

@@ -33,12 +33,7 @@ inline constexpr LawInfo kLaws[] = {
     {Law::Quadratic, B2B_NAMED(B2B_LAW_QUADRATIC), true},
 };
 
-constexpr bool laws_match_ids() {
-  for (const LawInfo& l : kLaws)
-    if (static_cast<int>(l.id) != l.value) return false;
-  return true;
-}
-static_assert(in_value_order(kLaws) && laws_match_ids(),
+static_assert(in_value_order(kLaws) && ids_match_values(kLaws),
               "kLaws lists B2B_LAW_* in value order, each with its Law");
 static_assert(sizeof kLaws / sizeof kLaws[0] == B2B_LAW_COUNT,
               "kLaws has one entry per normal law (B2B_LAW_COUNT)");
