@@ -51,27 +51,14 @@ fail() {
 
 echo "library: $lib"
 
-# --- the dynamic symbols: "TYPE NAME[@[@]VERSION]" -------------------------
-# --with-symbol-versions is the default of GNU nm >= 2.37 and a no-op there;
-# older nm needs it to print the versions.
-if ! "$nm" -D --defined-only --with-symbol-versions "$lib" >"$tmp/nm.raw" 2>"$tmp/nm.err"; then
-  "$nm" -D --defined-only "$lib" >"$tmp/nm.raw"
-fi
-awk 'NF >= 2 { print $(NF-1), $NF }' "$tmp/nm.raw" >"$tmp/syms"
-if [ ! -s "$tmp/syms" ]; then
+# --- the dynamic symbols, version nodes (B2B_1.0, ...) left out: they are
+# not part of the ABI surface. "TYPE NAME VERSIONED_NAME" each.
+. "$(dirname "$0")/dynamic_symbols.sh"
+dynamic_symbols "$nm" "$lib" '^B2B_[0-9]+[.][0-9]+$' "$tmp/exported"
+if [ ! -s "$tmp/exported" ]; then
   echo "FAIL: $nm -D --defined-only lists no symbols in $lib"
   exit 1
 fi
-
-# Version node symbols (type A, named like B2B_1.0) are not part of the ABI
-# surface. Everything else is an exported symbol: "TYPE NAME VERSIONED_NAME".
-awk '{
-  versioned = $2
-  name = versioned
-  sub(/@.*/, "", name)
-  if ($1 == "A" && name ~ /^B2B_[0-9]+\.[0-9]+$/) next
-  print $1, name, versioned
-}' "$tmp/syms" | sort -k2,2 >"$tmp/exported"
 
 # --- 1. nothing but b2b_* -------------------------------------------------
 awk '$2 !~ /^b2b_/' "$tmp/exported" >"$tmp/leaked"

@@ -52,18 +52,10 @@ fail() {
 
 echo "library: $lib"
 
-# "TYPE NAME VERSIONED_NAME" for each defined dynamic symbol. GNU nm >= 2.37
-# prints the versions by default; older ones need --with-symbol-versions.
-if ! "$nm" -D --defined-only --with-symbol-versions "$lib" >"$tmp/nm.raw" 2>/dev/null; then
-  "$nm" -D --defined-only "$lib" >"$tmp/nm.raw"
-fi
-awk 'NF >= 2 {
-  versioned = $NF
-  name = versioned
-  sub(/@.*/, "", name)
-  if ($(NF-1) == "A" && name ~ /^B2B_FORTRAN_[0-9]+\.[0-9]+$/) next
-  print $(NF-1), name, versioned
-}' "$tmp/nm.raw" | sort -k2,2 >"$tmp/exported"
+# "TYPE NAME VERSIONED_NAME" for each defined dynamic symbol, the version
+# nodes (B2B_FORTRAN_1.0, ...) left out.
+. "$(dirname "$0")/dynamic_symbols.sh"
+dynamic_symbols "$nm" "$lib" '^B2B_FORTRAN_[0-9]+[.][0-9]+$' "$tmp/exported"
 if [ ! -s "$tmp/exported" ]; then
   fail "$nm -D --defined-only lists no symbols in $lib"
 fi
