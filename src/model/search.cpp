@@ -3,22 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#ifdef B2B_HAVE_OPENMP
+#include <omp.h>
+#endif
+
 namespace b2b {
 namespace model {
 namespace {
 
-constexpr int kLeafSize = 4;
-
-// 21 bits of v spread to every third bit of a 63-bit code.
-uint64_t spread_bits(uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffULL;
-  v = (v | v << 16) & 0x1f0000ff0000ffULL;
-  v = (v | v << 8) & 0x100f00f00f00f00fULL;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-  v = (v | v << 2) & 0x1249249249249249ULL;
-  return v;
-}
+// Boxes per leaf. On examples/c/model_scaling.cpp's bundle, 16 visited
+// fewer nodes than 4 or 8 for the same pairs and was the fastest.
+constexpr int kLeafSize = 16;
 
 void grow(Box& into, const Box& b) {
   for (int i = 0; i < 3; ++i) {
@@ -29,11 +24,6 @@ void grow(Box& into, const Box& b) {
 
 }  // namespace
 
-bool boxes_overlap(const Box& a, const Box& b) {
-  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
-         a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
-}
-
 double box_distance(const Box& a, const Box& b) {
   double d = 0.0;
   for (int i = 0; i < 3; ++i) d = std::max(d, std::max(a.lo[i] - b.hi[i], b.lo[i] - a.hi[i]));
@@ -43,14 +33,15 @@ double box_distance(const Box& a, const Box& b) {
 void BoxTree::build(const std::vector<Box>& boxes, Backend backend) {
   boxes_ = &boxes;
   nodes_.clear();
-  sort_by_morton_code();
   use_rtree_ = false;
+  const int n = static_cast<int>(boxes.size());
 #ifdef B2B_HAVE_BOOST_GEOMETRY
   if (backend == Backend::kRTree) {
     use_rtree_ = true;
+    rtree_.clear();  // before the new one is packed: one tree in memory at a time
     std::vector<BValue> values;
     values.reserve(boxes.size());
-    for (int k : order_) values.emplace_back(to_bbox(boxes[k]), k);
+    for (int k = 0; k < n; ++k) values.emplace_back(to_bbox(boxes[k]), k);
     rtree_ = decltype(rtree_)(values.begin(), values.end());  // the packing constructor
     return;
   }
@@ -58,94 +49,93 @@ void BoxTree::build(const std::vector<Box>& boxes, Backend backend) {
 #else
   (void)backend;
 #endif
-  const int n = static_cast<int>(boxes.size());
+  order_.resize(boxes.size());
+  sorted_.resize(boxes.size());
   if (n == 0) return;
-  nodes_.reserve(2 * (n / kLeafSize + 1));
-  build_range(0, n);
-}
-
-// order_: the box indices sorted by the Morton code of the box centres,
-// taken in the centres' own bounding box (ties by index).
-void BoxTree::sort_by_morton_code() {
-  const std::vector<Box>& boxes = *boxes_;
-  const int n = static_cast<int>(boxes.size());
-  double lo[3], hi[3];
-  for (int i = 0; i < 3; ++i) {
-    lo[i] = HUGE_VAL;
-    hi[i] = -HUGE_VAL;
-  }
-  for (const Box& b : boxes)
-    for (int i = 0; i < 3; ++i) {
-      const double c = 0.5 * (b.lo[i] + b.hi[i]);
-      lo[i] = std::min(lo[i], c);
-      hi[i] = std::max(hi[i], c);
-    }
-  std::vector<std::pair<uint64_t, int>> keyed(n);
+  // The split works on a compact copy (twice each centre, and the index)
+  // that it reorders in place, so it reads memory in sequence.
+  std::vector<Centre> centres(boxes.size());
   for (int k = 0; k < n; ++k) {
-    uint64_t code = 0;
-    for (int i = 0; i < 3; ++i) {
-      const double span = hi[i] - lo[i];
-      const double c = 0.5 * (boxes[k].lo[i] + boxes[k].hi[i]);
-      const double t = span > 0.0 ? (c - lo[i]) / span : 0.0;
-      code |= spread_bits(static_cast<uint64_t>(t * 2097151.0)) << i;
-    }
-    keyed[k] = {code, k};
+    for (int a = 0; a < 3; ++a) centres[k].c[a] = boxes[k].lo[a] + boxes[k].hi[a];
+    centres[k].index = k;
   }
-  std::sort(keyed.begin(), keyed.end());
-  order_.resize(n);
-  for (int k = 0; k < n; ++k) order_[k] = keyed[k].second;
+  nodes_.reserve(2 * (n / kLeafSize + 1));
+  split_range(centres, 0, n);
+  for (int p = 0; p < n; ++p) order_[p] = centres[p].index;
+  for (int p = 0; p < n; ++p) sorted_[p] = boxes[order_[p]];
+  // Children come after their parent: one backward pass bounds them all.
+  for (int id = static_cast<int>(nodes_.size()) - 1; id >= 0; --id) {
+    Node& node = nodes_[id];
+    if (node.right < 0) {
+      node.box = sorted_[node.lo];
+      node.max_index = order_[node.lo];
+      for (int p = node.lo + 1; p < node.hi; ++p) {
+        grow(node.box, sorted_[p]);
+        node.max_index = std::max(node.max_index, order_[p]);
+      }
+    } else {
+      const Node& left = nodes_[id + 1];
+      const Node& right = nodes_[node.right];
+      node.box = left.box;
+      grow(node.box, right.box);
+      node.max_index = std::max(left.max_index, right.max_index);
+    }
+  }
 }
 
-// The partners of each queried box, found in Morton order, are appended in
-// the order of the box index: a sorted result, written once and in sequence.
-void BoxTree::place(const std::vector<QueryPart>& parts, std::vector<std::pair<int, int>>& out) const {
-  const int n = static_cast<int>(order_.size());
-  struct Where {
-    const int* partners = nullptr;
-    int count = 0;
-  };
-  std::vector<Where> where(static_cast<size_t>(n));
-  size_t total = 0;
-  for (const QueryPart& part : parts) {
-    const int* next = part.partners.data();
-    for (size_t g = 0; g < part.box.size(); ++g) {
-      where[part.box[g]] = {next, part.count[g]};
-      next += part.count[g];
-    }
-    total += part.partners.size();
-  }
-  out.reserve(total);
-  for (int i = 0; i < n; ++i)
-    for (int c = 0; c < where[i].count; ++c) out.emplace_back(i, where[i].partners[c]);
-}
-
-// A balanced tree over sorted positions: halves of the range (Morton order
-// keeps each half spatially compact), leaves of up to kLeafSize boxes.
-int BoxTree::build_range(int lo, int hi) {
+// A balanced tree, depth first: each node's boxes (positions [lo, hi) of
+// order_) are split at their median along the longest extent of their
+// centres, down to leaves of up to kLeafSize boxes. The splits follow the
+// scene's shape: on a long bundle of fibres, Morton-ordered halves (the
+// first version) made nodes flattened along the fibres, and the bundle's
+// search at 10^6 segments took 10.6 s against 8.4 s with median splits
+// (examples/c/model_scaling.cpp).
+int BoxTree::split_range(std::vector<Centre>& centres, int lo, int hi) {
   const int id = static_cast<int>(nodes_.size());
   nodes_.push_back(Node());
   nodes_[id].lo = lo;
   nodes_[id].hi = hi;
-  Box box = (*boxes_)[order_[lo]];
-  int max_index = order_[lo];
-  if (hi - lo <= kLeafSize) {
-    for (int p = lo + 1; p < hi; ++p) {
-      grow(box, (*boxes_)[order_[p]]);
-      max_index = std::max(max_index, order_[p]);
+  if (hi - lo <= kLeafSize) return id;
+  double clo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, chi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (int p = lo; p < hi; ++p)
+    for (int a = 0; a < 3; ++a) {
+      clo[a] = std::min(clo[a], centres[p].c[a]);
+      chi[a] = std::max(chi[a], centres[p].c[a]);
     }
-  } else {
-    const int mid = lo + (hi - lo) / 2;
-    const int left = build_range(lo, mid);
-    const int right = build_range(mid, hi);
-    box = nodes_[left].box;
-    grow(box, nodes_[right].box);
-    max_index = std::max(nodes_[left].max_index, nodes_[right].max_index);
-    nodes_[id].left = left;
-    nodes_[id].right = right;
-  }
-  nodes_[id].box = box;
-  nodes_[id].max_index = max_index;
+  int axis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (chi[a] - clo[a] > chi[axis] - clo[axis]) axis = a;
+  const int mid = lo + (hi - lo) / 2;
+  std::nth_element(centres.begin() + lo, centres.begin() + mid, centres.begin() + hi,
+                   [axis](const Centre& x, const Centre& y) {
+                     return x.c[axis] < y.c[axis] || (x.c[axis] == y.c[axis] && x.index < y.index);
+                   });
+  split_range(centres, lo, mid);  // == id + 1
+  nodes_[id].right = split_range(centres, mid, hi);
   return id;
+}
+
+// Chunk c holds the partners of boxes c * chunk_size onwards, each box's in
+// order: its pairs go to out after those of the chunks before it.
+void BoxTree::gather(int n_chunks, int chunk_size, int threads,
+                     std::vector<std::pair<int, int>>& out) const {
+  std::vector<size_t> offset(static_cast<size_t>(n_chunks) + 1, 0);
+  for (int c = 0; c < n_chunks; ++c) offset[c + 1] = offset[c] + chunks_[c].partners.size();
+  out.resize(offset[n_chunks]);
+#ifdef B2B_HAVE_OPENMP
+  const int nt = threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel for schedule(static) num_threads(nt) if (n_chunks > 1)
+#else
+  (void)threads;
+#endif
+  for (int c = 0; c < n_chunks; ++c) {
+    const Chunk& chunk = chunks_[c];
+    size_t at = offset[c], k = 0;
+    for (size_t r = 0; r < chunk.count.size(); ++r) {
+      const int i = c * chunk_size + static_cast<int>(r);
+      for (int e = 0; e < chunk.count[r]; ++e) out[at++] = {i, chunk.partners[k++]};
+    }
+  }
 }
 
 }  // namespace model

@@ -1,18 +1,20 @@
 // Broad phase: all pairs of overlapping axis-aligned boxes. Two backends,
 // both O(n log n) with no global box or cell size to choose:
+//  - a bounding-volume hierarchy built top down by median splits along the
+//    longest extent, on a copy of the boxes in its leaf order (a leaf's
+//    boxes are contiguous in memory): the model's search by default;
 //  - Boost.Geometry's R-tree (R* split, 16 entries per node) built by its
-//    packing constructor, one intersects query per box: the default when the
-//    Boost headers are found at build time (B2B_HAVE_BOOST_GEOMETRY), because
-//    it measured faster (examples/c/model_scaling.cpp compares the two on the
-//    same boxes);
-//  - a bounding-volume hierarchy over the boxes sorted by the Morton code of
-//    their centres (taken in the boxes' own bounding box): the fallback.
-// Either way the boxes are queried in Morton order, so consecutive queries
-// walk the same part of the tree, and each query's partners are appended in
-// the order of the lower box index: the result comes out sorted without a
-// global sort of all pairs (175 million at 10^6 bundle segments; the bundle
-// search at that size went from 31.9 to 20.2 s with the BVH, 15.4 to 13.8 s
-// with the R-tree, examples/c/model_scaling.cpp).
+//    packing constructor, when compiled with the Boost headers
+//    (B2B_HAVE_BOOST_GEOMETRY): what examples/c/model_scaling.cpp times the
+//    BVH against on the same boxes, and the model's search when b2b is
+//    configured with B2B_USE_BOOST_GEOMETRY=ON.
+// Either way each box i is queried for its partners j > i, in the order of
+// i, in fixed chunks of consecutive boxes: a host's segments follow their
+// beams, so consecutive queries walk the same part of the tree, and each
+// chunk's pairs come out sorted and are copied once into place. The chunks'
+// buffers are kept for the next search (the model searches again whenever a
+// node has moved half its margin), so a rebuild writes into memory it
+// already holds.
 #pragma once
 
 #include <cstdint>
@@ -35,20 +37,24 @@ struct Box {
 // L-infinity distance between two boxes (0 if they overlap).
 double box_distance(const Box& a, const Box& b);
 
-bool boxes_overlap(const Box& a, const Box& b);
+inline bool boxes_overlap(const Box& a, const Box& b) {
+  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+         a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+}
 
 class BoxTree {
  public:
   enum class Backend { kBvh, kRTree };
-  // The backend an update uses: the R-tree when it is built in.
+  // The backend an update uses: the BVH, which measured faster in total
+  // than the R-tree on examples/c/model_scaling.cpp's scenes; the R-tree
+  // when b2b was configured with B2B_USE_BOOST_GEOMETRY=ON.
   static Backend default_backend() {
-#ifdef B2B_HAVE_BOOST_GEOMETRY
+#ifdef B2B_BROAD_PHASE_RTREE
     return Backend::kRTree;
 #else
     return Backend::kBvh;
 #endif
   }
-  static bool has_rtree() { return default_backend() == Backend::kRTree; }
 
   // Builds the index over boxes (kept by reference until the next build).
   // kRTree without the Boost headers builds the BVH.
@@ -56,23 +62,27 @@ class BoxTree {
   // Every pair (i, j), i < j, of overlapping boxes for which accept(i, j)
   // is true, sorted. threads: as b2b's "threads" option (0: OpenMP's default).
   template <class Accept>
-  void overlapping_pairs(Accept accept, int threads, std::vector<std::pair<int, int>>& out) const;
+  void overlapping_pairs(Accept accept, int threads, std::vector<std::pair<int, int>>& out);
 
  private:
+  // 64 bytes, one cache line. Nodes are stored depth first, so a node's
+  // left child is the next node.
   struct Node {
     Box box;
-    int lo, hi;          // the sorted boxes it covers: positions [lo, hi)
-    int max_index;       // the largest box index among them
-    int left = -1, right = -1;
+    int lo, hi;      // the boxes it covers: positions [lo, hi) of order_
+    int right = -1;  // the right child (-1: a leaf)
+    int max_index;   // the largest box index among them
   };
-  // One chunk of queries: for each queried box, its partners j > i.
-  struct QueryPart {
-    std::vector<int> box, count, partners;
+  // One chunk of consecutive boxes: each one's partners j > i, in order.
+  struct Chunk {
+    std::vector<int> count, partners;
   };
   const std::vector<Box>* boxes_ = nullptr;
   bool use_rtree_ = false;
-  std::vector<int> order_;  // box index at each Morton position
+  std::vector<int> order_;   // BVH: the box index at each position (leaf order)
+  std::vector<Box> sorted_;  // BVH: the boxes in that order
   std::vector<Node> nodes_;
+  std::vector<Chunk> chunks_;  // kept from search to search
 #ifdef B2B_HAVE_BOOST_GEOMETRY
   using BPoint = boost::geometry::model::point<double, 3, boost::geometry::cs::cartesian>;
   using BBox = boost::geometry::model::box<BPoint>;
@@ -82,52 +92,67 @@ class BoxTree {
     return BBox(BPoint(b.lo[0], b.lo[1], b.lo[2]), BPoint(b.hi[0], b.hi[1], b.hi[2]));
   }
 #endif
-  void sort_by_morton_code();
-  int build_range(int lo, int hi);
+  struct Centre {
+    double c[3];  // twice the box's centre
+    int index;
+  };
+  int split_range(std::vector<Centre>& centres, int lo, int hi);
   // Appends to out the boxes j > i that overlap box i and are accepted.
   template <class Accept>
   void partners(int i, Accept& accept, std::vector<int>& out) const;
-  void place(const std::vector<QueryPart>& parts, std::vector<std::pair<int, int>>& out) const;
+  template <class Accept>
+  void rtree_partners(int i, Accept& accept, std::vector<int>& out) const;
+  // The chunks' pairs, copied in order into out.
+  void gather(int n_chunks, int chunk_size, int threads, std::vector<std::pair<int, int>>& out) const;
 };
 
 template <class Accept>
 void BoxTree::partners(int i, Accept& accept, std::vector<int>& out) const {
-  const Box& bi = (*boxes_)[i];
-#ifdef B2B_HAVE_BOOST_GEOMETRY
   if (use_rtree_) {
-    struct Sink {  // an output iterator that keeps the accepted later boxes
-      int i;
-      Accept* accept;
-      std::vector<int>* out;
-      Sink& operator*() { return *this; }
-      Sink& operator++() { return *this; }
-      Sink& operator++(int) { return *this; }
-      Sink& operator=(const BValue& v) {
-        if (v.second > i && (*accept)(i, v.second)) out->push_back(v.second);
-        return *this;
-      }
-    };
-    rtree_.query(boost::geometry::index::intersects(to_bbox(bi)), Sink{i, &accept, &out});
+    rtree_partners(i, accept, out);
     return;
   }
-#endif
   if (nodes_.empty()) return;
+  const Box bi = (*boxes_)[i];
   int stack[128];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
+    const int id = stack[--top];
+    const Node& node = nodes_[id];
     if (node.max_index <= i || !boxes_overlap(node.box, bi)) continue;
-    if (node.left < 0) {
+    if (node.right < 0) {
       for (int q = node.lo; q < node.hi; ++q) {
+        if (!boxes_overlap(sorted_[q], bi)) continue;
         const int j = order_[q];
-        if (j > i && boxes_overlap((*boxes_)[j], bi) && accept(i, j)) out.push_back(j);
+        if (j > i && accept(i, j)) out.push_back(j);
       }
     } else {
-      stack[top++] = node.left;
       stack[top++] = node.right;
+      stack[top++] = id + 1;
     }
   }
+}
+
+template <class Accept>
+void BoxTree::rtree_partners(int i, Accept& accept, std::vector<int>& out) const {
+#ifdef B2B_HAVE_BOOST_GEOMETRY
+  struct Sink {  // an output iterator that keeps the accepted later boxes
+    int i;
+    Accept* accept;
+    std::vector<int>* out;
+    Sink& operator*() { return *this; }
+    Sink& operator++() { return *this; }
+    Sink& operator++(int) { return *this; }
+    Sink& operator=(const BValue& v) {
+      if (v.second > i && (*accept)(i, v.second)) out->push_back(v.second);
+      return *this;
+    }
+  };
+  rtree_.query(boost::geometry::index::intersects(to_bbox((*boxes_)[i])), Sink{i, &accept, &out});
+#else
+  (void)i, (void)accept, (void)out;
+#endif
 }
 
 }  // namespace model
