@@ -73,8 +73,9 @@
  *   Broad phase: boxes around each segment (its Hermite control polygon,
  *     which contains the curve) grown by r + g0/2 + 4s/3, in Boost.Geometry's
  *     packed R-tree when b2b was built with the Boost headers, else in b2b's
- *     bounding-volume hierarchy over their Morton order (both O(n log n), no
- *     global box or cell size to set; the same candidates either way);
+ *     bounding-volume hierarchy (median splits along the longest extent;
+ *     both O(n log n), no global box or cell size to set; the same
+ *     candidates either way);
  *     rebuilt only when some node has moved more than s/2
  *     since the last build, so that most iterations reuse the candidates.
  *     g0: the largest regularization gap of the group pairs (0 without the

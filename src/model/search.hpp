@@ -1,13 +1,14 @@
 // Broad phase: all pairs of overlapping axis-aligned boxes. Two backends,
 // both O(n log n) with no global box or cell size to choose:
-//  - a bounding-volume hierarchy built top down by median splits along the
-//    longest extent, on a copy of the boxes in its leaf order (a leaf's
-//    boxes are contiguous in memory): the model's search by default;
 //  - Boost.Geometry's R-tree (R* split, 16 entries per node) built by its
 //    packing constructor, when compiled with the Boost headers
-//    (B2B_HAVE_BOOST_GEOMETRY): what examples/c/model_scaling.cpp times the
-//    BVH against on the same boxes, and the model's search when b2b is
-//    configured with B2B_USE_BOOST_GEOMETRY=ON.
+//    (B2B_HAVE_BOOST_GEOMETRY): the model's search when b2b is built with
+//    them (B2B_USE_BOOST_GEOMETRY, B2B_BROAD_PHASE_RTREE);
+//  - a bounding-volume hierarchy built top down by median splits along the
+//    longest extent, on a copy of the boxes in its leaf order (a leaf's
+//    boxes are contiguous in memory): the model's search otherwise.
+// examples/c/model_scaling.cpp times the two on the same boxes: within a few
+// per cent of each other in total, the R-tree with the lower worst exponent.
 // Either way each box i is queried for its partners j > i, in the order of
 // i, in fixed chunks of consecutive boxes: a host's segments follow their
 // beams, so consecutive queries walk the same part of the tree, and each
@@ -45,9 +46,7 @@ inline bool boxes_overlap(const Box& a, const Box& b) {
 class BoxTree {
  public:
   enum class Backend { kBvh, kRTree };
-  // The backend an update uses: the BVH, which measured faster in total
-  // than the R-tree on examples/c/model_scaling.cpp's scenes; the R-tree
-  // when b2b was configured with B2B_USE_BOOST_GEOMETRY=ON.
+  // The backend an update uses: the R-tree when b2b is built with it.
   static Backend default_backend() {
 #ifdef B2B_BROAD_PHASE_RTREE
     return Backend::kRTree;
