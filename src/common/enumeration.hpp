@@ -14,6 +14,13 @@ namespace b2b {
 // compile.
 #define B2B_NAMED(enumerator) (enumerator), #enumerator
 
+// The entry of an enumeration that has nothing but a name (B2B_END_*,
+// B2B_TANGENT_*): {B2B_NAMED(enumerator)}.
+struct NamedValue {
+  int value;
+  const char* name;
+};
+
 // What a check and its message need of an enumeration: how many values,
 // and the names of the first and the last.
 struct Enumeration {

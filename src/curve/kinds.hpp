@@ -66,12 +66,7 @@ inline const KindInfo& kind_info(int kind) { return kKinds[kind]; }
 inline Kind kind_of(int kind) { return kKinds[kind].id; }
 
 // The end rules: names only (their meaning is in segment.cpp's build).
-struct EndRuleInfo {
-  int value;
-  const char* name;
-};
-
-inline constexpr EndRuleInfo kEndRules[] = {
+inline constexpr NamedValue kEndRules[] = {
     {B2B_NAMED(B2B_END_NEIGHBOUR)},
     {B2B_NAMED(B2B_END_REFLECT)},
     {B2B_NAMED(B2B_END_TANGENT)},

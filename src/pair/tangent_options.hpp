@@ -14,12 +14,7 @@ namespace pair {
 
 // The values of the "tangent" option, in value order (what its check and
 // message read, src/capi/capi_params.cpp).
-struct TangentModeInfo {
-  int value;
-  const char* name;
-};
-
-inline constexpr TangentModeInfo kTangentModes[] = {
+inline constexpr NamedValue kTangentModes[] = {
     {B2B_NAMED(B2B_TANGENT_EXACT)},
     {B2B_NAMED(B2B_TANGENT_SYMMETRIC)},
     {B2B_NAMED(B2B_TANGENT_MAIN)},
