@@ -60,7 +60,7 @@
 
 #include "model/search.hpp"
 
-#ifdef B2B_SCALING_HAVE_BOOST
+#ifdef B2B_HAVE_BOOST_GEOMETRY
 #include <boost/version.hpp>
 #endif
 
@@ -537,7 +537,7 @@ int main(int argc, char** argv) {
               kRadius,
               quick ? "1" : "3 (10^3, 10^4), 2 (searches above), 1 (model updates above)",
               load_average().c_str());
-#ifdef B2B_SCALING_HAVE_BOOST
+#ifdef B2B_HAVE_BOOST_GEOMETRY
   std::printf("Boost.Geometry %d.%d: bgi::rtree<box, rstar<16>> by its packing constructor, "
               "one intersects query per box\n",
               BOOST_VERSION / 100000, BOOST_VERSION / 100 % 1000);
@@ -575,7 +575,7 @@ int main(int argc, char** argv) {
         row.t_brute = now_s() - t0;
         if (brute != bvh) fail("BVH pairs differ from brute force");
       }
-#ifdef B2B_SCALING_HAVE_BOOST
+#ifdef B2B_HAVE_BOOST_GEOMETRY
       {
         Pairs bp;
         time_search(boxes, b2b::model::BoxTree::Backend::kRTree, accept, search_reps, bp,
@@ -648,7 +648,10 @@ int main(int argc, char** argv) {
   // Exponents: log-log least squares over the sizes run.
   std::printf("\nFitted exponent p of time ~ segments^p (sizes %d .. %d):\n", sizes.front(),
               sizes.back());
-  double worst = 0, worst_boost = 0;
+  double worst = 0;
+#ifdef B2B_HAVE_BOOST_GEOMETRY
+  double worst_boost = 0;
+#endif
   for (const char* scene : {"network", "bundle"}) {
     std::vector<double> lx, lp, l_bvh, l_boost, lxm, l_upd;
     for (const Row& r : rows)
@@ -670,7 +673,7 @@ int main(int argc, char** argv) {
     worst = std::max(worst, p);
     std::printf("  %-8s search build (BVH) %.3f%s", scene, p,
                 p <= 1.15 ? " (goal <= 1.15: met)" : " (goal <= 1.15: NOT met)");
-#ifdef B2B_SCALING_HAVE_BOOST
+#ifdef B2B_HAVE_BOOST_GEOMETRY
     const double pb = slope(lx, l_boost);
     worst_boost = std::max(worst_boost, pb);
     std::printf(", Boost %.3f%s", pb, pb <= 1.15 ? " (met)" : " (NOT met)");
@@ -682,12 +685,12 @@ int main(int argc, char** argv) {
     std::printf("\n");
   }
   std::printf("search build exponent (worst scene): BVH %.3f", worst);
-#ifdef B2B_SCALING_HAVE_BOOST
+#ifdef B2B_HAVE_BOOST_GEOMETRY
   std::printf(", Boost %.3f", worst_boost);
 #endif
   std::printf("\n");
 
-#ifdef B2B_SCALING_HAVE_BOOST
+#ifdef B2B_HAVE_BOOST_GEOMETRY
   double sum_ours = 0, sum_boost = 0;
   int boost_wins = 0;
   for (const Row& r : rows) {
@@ -711,7 +714,7 @@ int main(int argc, char** argv) {
   std::printf("checks: BVH = brute force (up to %d segments)%s, model candidates = BVH, "
               "updates reuse the search, 1 and 2 threads agree: all passed\n",
               kBruteMax,
-#ifdef B2B_SCALING_HAVE_BOOST
+#ifdef B2B_HAVE_BOOST_GEOMETRY
               ", Boost = BVH"
 #else
               ""
