@@ -69,7 +69,7 @@ module b2b
   public :: b2b_segment_eval, b2b_beam_segment_count, b2b_beam_segment_patch
   public :: b2b_params_create, b2b_params_destroy, b2b_params_set_real, b2b_params_set_int
   public :: b2b_params_get_real, b2b_params_get_int, b2b_params_finalize
-  public :: b2b_params_history_size, b2b_pair_eval, b2b_pair_history_handover
+  public :: b2b_params_history_size, b2b_pair_eval, b2b_pair_eval_ends, b2b_pair_history_handover
   public :: b2b_model_create, b2b_model_destroy, b2b_model_add_beam, b2b_model_set_group_pair
   public :: b2b_model_set_self_contact, b2b_model_set_real, b2b_model_set_int
   public :: b2b_model_finalize, b2b_model_update, b2b_model_contact_count
@@ -237,6 +237,29 @@ module b2b
       real(c_double), intent(in) :: X(*)
       type(c_ptr), value :: end_tangents
       real(c_double), intent(in) :: radii(*), hist_old(*)
+      real(c_double), intent(inout) :: hist_new(*)
+      integer(c_int), value :: hist_len
+      integer(c_int), intent(inout) :: contact_status
+      real(c_double), intent(inout) :: info(*), residual(*)
+      type(c_ptr), value :: tangent
+      integer(c_int), value :: ldk
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_pair_eval_ends(params, segments, X, end_tangents, radii, ends, hist_old, &
+                                  hist_new, hist_len, contact_status, info, residual, tangent, &
+                                  ldk, errmsg, errmsg_len) bind(C, name='b2b_pair_eval_ends') &
+                                  result(st)
+      import :: c_int, c_double, c_ptr, c_char
+      type(c_ptr), value :: params
+      integer(c_int), intent(in) :: segments(6)
+      real(c_double), intent(in) :: X(*)
+      type(c_ptr), value :: end_tangents
+      real(c_double), intent(in) :: radii(*)
+      integer(c_int), intent(in) :: ends(2)
+      real(c_double), intent(in) :: hist_old(*)
       real(c_double), intent(inout) :: hist_new(*)
       integer(c_int), value :: hist_len
       integer(c_int), intent(inout) :: contact_status
@@ -859,7 +882,65 @@ contains
     real(c_double), intent(in), contiguous, target, optional :: end_tangents(:, :)
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
-    character(len=*), parameter :: me = 'b2b_pair_eval'
+    call eval_pair('b2b_pair_eval', params, segments, X, radii, hist_old, hist_new, &
+                   contact_status, info, residual, tangent, end_tangents, ierr, errmsg)
+  end subroutine
+
+  !> b2b_pair_eval with parameters held at segment ends (End contact in the
+  !> C header b2b_pair.h: node-to-segment and node-to-node contact).
+  !>   ends(2)              A's, then B's: -1 (the segment's start node), +1
+  !>                        (its end node) or 0 (free); anything else is
+  !>                        B2B_ERR_RANGE. The other arguments as b2b_pair_eval;
+  !>                        info(B2B_IX_INFO_END_A), info(B2B_IX_INFO_END_B)
+  !>                        echo ends.
+  subroutine b2b_pair_eval_ends(params, segments, X, radii, ends, hist_old, hist_new, &
+                                contact_status, info, residual, tangent, end_tangents, ierr, &
+                                errmsg)
+    type(b2b_params), intent(in) :: params
+    integer, intent(in), contiguous :: segments(:, :)
+    real(c_double), intent(in), contiguous :: X(:, :)
+    real(c_double), intent(in), contiguous :: radii(:)
+    integer, intent(in), contiguous :: ends(:)
+    real(c_double), intent(in), contiguous, target :: hist_old(:)
+    real(c_double), intent(inout), contiguous, target :: hist_new(:)
+    integer, intent(inout) :: contact_status
+    real(c_double), intent(inout), contiguous :: info(:)
+    real(c_double), intent(inout), contiguous :: residual(:)
+    real(c_double), intent(inout), contiguous, target, optional :: tangent(:, :)
+    real(c_double), intent(in), contiguous, target, optional :: end_tangents(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_pair_eval_ends'
+    logical :: ok
+    if (.not. shape_is(shape(ends), [2])) then
+      call finish_size(me, 'ends', shape(ends), [2], ierr, errmsg)
+      return
+    end if
+    call check_int_matrix(me, 'ends', reshape(ends, [2, 1]), ok, ierr, errmsg)
+    if (.not. ok) return
+    call eval_pair(me, params, segments, X, radii, hist_old, hist_new, contact_status, info, &
+                   residual, tangent, end_tangents, ierr, errmsg, int(ends, c_int))
+  end subroutine
+
+  ! b2b_pair_eval and b2b_pair_eval_ends (cends present): the argument checks
+  ! and the call.
+  subroutine eval_pair(me, params, segments, X, radii, hist_old, hist_new, contact_status, &
+                       info, residual, tangent, end_tangents, ierr, errmsg, cends)
+    character(len=*), intent(in) :: me
+    type(b2b_params), intent(in) :: params
+    integer, intent(in), contiguous :: segments(:, :)
+    real(c_double), intent(in), contiguous :: X(:, :)
+    real(c_double), intent(in), contiguous :: radii(:)
+    real(c_double), intent(in), contiguous, target :: hist_old(:)
+    real(c_double), intent(inout), contiguous, target :: hist_new(:)
+    integer, intent(inout) :: contact_status
+    real(c_double), intent(inout), contiguous :: info(:)
+    real(c_double), intent(inout), contiguous :: residual(:)
+    real(c_double), intent(inout), contiguous, target, optional :: tangent(:, :)
+    real(c_double), intent(in), contiguous, target, optional :: end_tangents(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    integer(c_int), intent(in), optional :: cends(2)
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
     type(c_ptr) :: pk, pt
     integer(c_int) :: st, cseg(6), cstatus, ldk
@@ -928,15 +1009,26 @@ contains
     cstatus = 0
     buf = c_null_char
     if (size(hist_old) > 0) then
-      st = c_b2b_pair_eval(params%ptr, cseg, X, pt, radii, hist_old, hist_new, &
-                           int(size(hist_old), c_int), cstatus, info, residual, pk, ldk, &
-                           buf, int(size(buf), c_int))
+      if (present(cends)) then
+        st = c_b2b_pair_eval_ends(params%ptr, cseg, X, pt, radii, cends, hist_old, hist_new, &
+                                  int(size(hist_old), c_int), cstatus, info, residual, pk, &
+                                  ldk, buf, int(size(buf), c_int))
+      else
+        st = c_b2b_pair_eval(params%ptr, cseg, X, pt, radii, hist_old, hist_new, &
+                             int(size(hist_old), c_int), cstatus, info, residual, pk, ldk, &
+                             buf, int(size(buf), c_int))
+      end if
     else
       ! A zero-size array may have any address, even NULL: pass a dummy and
       ! let the library report the length.
       h0 = 0
-      st = c_b2b_pair_eval(params%ptr, cseg, X, pt, radii, h0, h1, 0_c_int, cstatus, info, &
-                           residual, pk, ldk, buf, int(size(buf), c_int))
+      if (present(cends)) then
+        st = c_b2b_pair_eval_ends(params%ptr, cseg, X, pt, radii, cends, h0, h1, 0_c_int, &
+                                  cstatus, info, residual, pk, ldk, buf, int(size(buf), c_int))
+      else
+        st = c_b2b_pair_eval(params%ptr, cseg, X, pt, radii, h0, h1, 0_c_int, cstatus, info, &
+                             residual, pk, ldk, buf, int(size(buf), c_int))
+      end if
     end if
     if (st == B2B_OK) contact_status = cstatus
     if (st /= B2B_OK) call fortran_terms(buf, 'hist_old')

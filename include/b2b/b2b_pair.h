@@ -110,6 +110,28 @@
  *
  * info[B2B_PAIR_INFO_LEN]: see B2B_INFO_*; unused entries are zero.
  *
+ * End contact (b2b_pair_eval_ends): node-to-segment and node-to-node
+ * -------------------------------------------------------------------
+ * Where the closest point of two centrelines is a node of one beam that the
+ * segments on both sides of it point away from (a convex joint of straight
+ * segments, where the beam bends towards the other one, or a beam's end),
+ * every pair of the free element reports OUTSIDE, yet the beams touch there.
+ * b2b_pair_eval_ends is the same element with the parameter of A (ends[0])
+ * or of B (ends[1]) held at an end of its segment, -1 (its start node) or +1
+ * (its end node); 0 leaves it free. With one parameter held the other
+ * minimises the distance alone (node-to-segment; defined at any crossing
+ * angle, so "parallel_angle" does not apply; PARALLEL only where that
+ * one-dimensional problem is singular); with both held the two nodes are
+ * the contact points (node-to-node). Gap, normal, normal law, friction (the
+ * held parameter is the anchor, history as above), residual and exact
+ * tangent are those of the free element with the held parameters constant:
+ * their derivatives drop out of the linearization. A held parameter needs
+ * no ownership test: which pair owns a node, and whether the node really is
+ * the closest point of its beam, is the caller's decision (the contact
+ * model's rule: doc/contact-element.md section 14); a free one is owned as
+ * above. info[B2B_INFO_END_A], info[B2B_INFO_END_B] echo ends. ends[] other
+ * than -1, 0, +1 is B2B_ERR_RANGE; ends = {0, 0} is b2b_pair_eval.
+ *
  * Friction (Coulomb; Zavarise and Wriggers 2000, Litewka and Wriggers 2002)
  * -------------------------------------------------------------------------
  * With "friction" mu > 0 an active pair also carries a tangential force T,
@@ -219,9 +241,12 @@ enum {
   B2B_INFO_SLIP = 20,           /* slip increment of A relative to B in this step, 3 entries
                                    (zero in stick) */
   B2B_INFO_FRICTION_STATE = 23, /* B2B_FRICTION_* */
-  B2B_INFO_DISSIPATION = 24     /* energy dissipated by slip in this step, >= 0 */
+  B2B_INFO_DISSIPATION = 24,    /* energy dissipated by slip in this step, >= 0 */
+  B2B_INFO_END_A = 25,          /* end contact: A's parameter held at this end of its
+                                   segment, -1 or +1 (a node of A); 0: free */
+  B2B_INFO_END_B = 26           /* the same for B's parameter */
 };
-#define B2B_PAIR_INFO_LEN 32 /* entries 25..31 are reserved (written as 0) */
+#define B2B_PAIR_INFO_LEN 32 /* entries 27..31 are reserved (written as 0) */
 
 /* Tangent options ("tangent"). Values are fixed. */
 enum {
@@ -259,6 +284,15 @@ B2B_EXPORT int b2b_pair_eval(const b2b_params *params, const int segments[6],
                              int hist_len, int *contact_status, double info[32],
                              double residual[24], double *tangent, int ldk, char *errmsg,
                              int errmsg_len);
+
+/* b2b_pair_eval with parameters held at segment ends (see End contact above):
+ * ends[2] for A and B, each -1, 0 or +1. */
+B2B_EXPORT int b2b_pair_eval_ends(const b2b_params *params, const int segments[6],
+                                  const double X[24], const double end_tangents[12],
+                                  const double radii[2], const int ends[2],
+                                  const double *hist_old, double *hist_new, int hist_len,
+                                  int *contact_status, double info[32], double residual[24],
+                                  double *tangent, int ldk, char *errmsg, int errmsg_len);
 
 /* Re-expresses a committed pair history for the neighbouring segment of one
  * beam (see Handover above). beam: 0 (A) or 1 (B), the beam whose segment

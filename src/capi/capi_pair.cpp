@@ -23,15 +23,11 @@ namespace {
 
 const char* const kBeam[2] = {"beam A: ", "beam B: "};
 
-}  // namespace
-
-extern "C" {
-
-int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X,
-                  const double* end_tangents, const double* radii, const double* hist_old,
-                  double* hist_new, int hist_len, int* contact_status, double* info,
-                  double* residual, double* tangent, int ldk, char* errmsg, int errmsg_len) {
-  const Reporter r("b2b_pair_eval", errmsg, errmsg_len);
+// b2b_pair_eval and b2b_pair_eval_ends: ends null for the free pair.
+int eval_pair(const Reporter& r, const b2b_params* params, const int* segments, const double* X,
+              const double* end_tangents, const double* radii, const int* ends,
+              const double* hist_old, double* hist_new, int hist_len, int* contact_status,
+              double* info, double* residual, double* tangent, int ldk) {
   return guarded(r, [&]() -> int {
     if (int st = check_finalized(r, params)) return st;
     if (segments == nullptr) return r.fail(B2B_ERR_NULL, "segments is NULL");
@@ -44,6 +40,15 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
     if (residual == nullptr) return r.fail(B2B_ERR_NULL, "residual is NULL");
     if (tangent != nullptr && ldk < pr::kNdof)
       return r.fail(B2B_ERR_SIZE, "ldk is %d, the tangent needs at least %d", ldk, pr::kNdof);
+    pr::Ends held;
+    if (ends) {
+      for (int b = 0; b < 2; ++b)
+        if (ends[b] < -1 || ends[b] > 1)
+          return r.fail(B2B_ERR_RANGE, "%sends[%d] is %d, must be -1, 0 or +1", kBeam[b], b,
+                        ends[b]);
+      held.a = ends[0];
+      held.b = ends[1];
+    }
 
     pr::SegmentInput seg[2];
     double unit[2][6];
@@ -64,7 +69,7 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
     pr::PairResult out;
     double K[pr::kNdof * pr::kNdof];
     const pr::PairFailure f =
-        pr::evaluate_pair(params->p, seg[0], seg[1], hist_old, out, tangent ? K : nullptr);
+        pr::evaluate_pair(params->p, seg[0], seg[1], hist_old, out, tangent ? K : nullptr, held);
     if (f.status != B2B_OK) return report_segment_failure(r, kBeam[f.beam], f.segment);
     if (out.overflow && params->p.friction > 0.0)
       return r.fail(B2B_ERR_RANGE,
@@ -88,6 +93,30 @@ int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X
                     pr::kNdof * sizeof(double));
     return B2B_OK;
   });
+}
+
+}  // namespace
+
+extern "C" {
+
+int b2b_pair_eval(const b2b_params* params, const int* segments, const double* X,
+                  const double* end_tangents, const double* radii, const double* hist_old,
+                  double* hist_new, int hist_len, int* contact_status, double* info,
+                  double* residual, double* tangent, int ldk, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_pair_eval", errmsg, errmsg_len);
+  return eval_pair(r, params, segments, X, end_tangents, radii, nullptr, hist_old, hist_new,
+                   hist_len, contact_status, info, residual, tangent, ldk);
+}
+
+int b2b_pair_eval_ends(const b2b_params* params, const int* segments, const double* X,
+                       const double* end_tangents, const double* radii, const int* ends,
+                       const double* hist_old, double* hist_new, int hist_len,
+                       int* contact_status, double* info, double* residual, double* tangent,
+                       int ldk, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_pair_eval_ends", errmsg, errmsg_len);
+  if (ends == nullptr) return r.fail(B2B_ERR_NULL, "ends is NULL");
+  return eval_pair(r, params, segments, X, end_tangents, radii, ends, hist_old, hist_new,
+                   hist_len, contact_status, info, residual, tangent, ldk);
 }
 
 }  // extern "C"

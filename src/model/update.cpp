@@ -22,6 +22,7 @@
 #include "../pair/handover.hpp"
 #include "../pair/history.hpp"
 #include "../pair/laws.hpp"
+#include "end_contact.hpp"
 #include "model.hpp"
 #include "segment_geometry.hpp"
 
@@ -97,6 +98,7 @@ class Updater {
                             info.end_rule,     info.radius, &built_X_[12 * slot_[s]],
                             kNoTangents};
   }
+  SegmentEnds ends_of(int s) const;
   void evaluate(Item& item, double* K) const;
   Problem evaluate_all();
   Problem handovers();
@@ -300,9 +302,35 @@ Problem Updater::build_segments() {
   return Problem();
 }
 
+// Which nodes of segment s may hold an end contact (end_contact.hpp): its
+// start, if the beam starts there or the straight segments turn there, and
+// its end where the beam ends.
+SegmentEnds Updater::ends_of(int s) const {
+  SegmentEnds e;
+  const SegmentInfo& info = m_.table_.segment(s);
+  const int prev = m_.table_.neighbour(s, -1);
+  e.end_held = m_.table_.neighbour(s, 1) < 0;
+  e.has_prev = prev >= 0;
+  if (!e.has_prev) {
+    e.start_held = true;
+  } else if (info.kind == B2B_CURVE_LINEAR && m_.table_.segment(prev).kind == B2B_CURVE_LINEAR) {
+    // The chord before the joint (slots x2 -> x3 of the previous segment).
+    const SegmentInfo& pi = m_.table_.segment(prev);
+    const double* p0 = &cur_[3 * m_.used_index_[pi.nodes[1]]];
+    const double* p1 = &cur_[3 * m_.used_index_[pi.nodes[2]]];
+    for (int i = 0; i < 3; ++i) e.prev_tangent[i] = 0.5 * (p1[i] - p0[i]);
+    e.start_held = true;
+  }
+  return e;
+}
+
 void Updater::evaluate(Item& item, double* K) const {
   const double* h = item.hist_old ? item.hist_old : fresh_.data();
-  pair::evaluate_built(m_.group_pairs_[item.gp].params, ref(item.a), ref(item.b), h, item.res, K);
+  const pair::Params& p = m_.group_pairs_[item.gp].params;
+  const pair::SegmentRef A = ref(item.a), B = ref(item.b);
+  pair::evaluate_built(p, A, B, h, item.res, K);
+  if (item.res.contact_status == B2B_CONTACT_OUTSIDE)
+    resolve_end_contact(p, A, B, ends_of(item.a), ends_of(item.b), h, item.res, K);
 }
 
 Problem Updater::overflow(const Item& item) const {

@@ -74,7 +74,8 @@ void chord_start(const double* a0, const double* a1, const double* b0, const dou
 }
 
 ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, double xi,
-                             double eta, int max_iterations, double tol_length, double scale) {
+                             double eta, int max_iterations, double tol_length, double scale,
+                             unsigned fixed) {
   ClosestPoints r;
   const double inv_scale = 1.0 / scale;
   bool newton_at_rounding = false;
@@ -94,7 +95,10 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
     scale3(xbd, inv_scale);
     scale3(xbdd, inv_scale);
     // Gradient of phi; in length units after dividing by the speeds.
-    const double g1 = dot3(d, xad), g2 = -dot3(d, xbd);
+    // A fixed parameter has no gradient component: its condition is not
+    // one of the problem's (the point is held at a node).
+    const double g1 = (fixed & kFixXi) ? 0.0 : dot3(d, xad);
+    const double g2 = (fixed & kFixEta) ? 0.0 : -dot3(d, xbd);
     const double na = norm3(xad), nb = norm3(xbd);
     // The tangential residual, relative to the axis distance rho = |d| as
     // well as to the segments: the normal d / rho tilts by about |g| / rho,
@@ -119,10 +123,12 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
     }
     // Hessian of phi, shifted to positive definite where it is not (far from
     // the solution, or a curvature term d.x'' that dominates).
-    double h11 = dot3(xad, xad) + dot3(d, xadd);
-    double h22 = dot3(xbd, xbd) - dot3(d, xbdd);
-    const double h12 = -dot3(xad, xbd);
     const double hscale = na * na + nb * nb;
+    // A fixed parameter's row and column are decoupled (any positive
+    // diagonal): its step is then zero, the other's the 1-D Newton step.
+    double h11 = (fixed & kFixXi) ? hscale : dot3(xad, xad) + dot3(d, xadd);
+    double h22 = (fixed & kFixEta) ? hscale : dot3(xbd, xbd) - dot3(d, xbdd);
+    const double h12 = fixed ? 0.0 : -dot3(xad, xbd);
     const double mean = 0.5 * (h11 + h22);
     const double radius = std::sqrt(0.25 * (h11 - h22) * (h11 - h22) + h12 * h12);
     const double lambda_min = mean - radius;

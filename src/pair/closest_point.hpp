@@ -24,12 +24,18 @@ struct ClosestPoints {
 void chord_start(const double* a0, const double* a1, const double* b0, const double* b1,
                  double scale, double* xi, double* eta);
 
-// Newton from (xi, eta). tol_length: the converged gradient, in length
+// Which parameters closest_points holds at their start value (an end contact:
+// a node of A or of B, doc/contact-element.md section 14).
+enum FixedParameter : unsigned { kFixNone = 0, kFixXi = 1, kFixEta = 2 };
+
+// Newton from (xi, eta); the parameters in `fixed` keep their start values
+// (the search is then one-dimensional, or none). tol_length: the converged gradient, in length
 // units (the components of x_A - x_B along both tangents), must be below it.
 // scale: a length of the segments' size; all products are formed in units of
 // it, so that nothing overflows or underflows for any supported coordinates.
 ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, double xi,
-                             double eta, int max_iterations, double tol_length, double scale);
+                             double eta, int max_iterations, double tol_length, double scale,
+                             unsigned fixed = kFixNone);
 
 }  // namespace pair
 }  // namespace b2b

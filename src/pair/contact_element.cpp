@@ -21,7 +21,7 @@ inline double col_dot(const double* M, int c, const double* v) { return curve::d
 }  // namespace
 
 PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const SegmentInput& B,
-                          const double* hist_old, PairResult& out, double* K) {
+                          const double* hist_old, PairResult& out, double* K, Ends ends) {
   PairFailure fail;
   curve::Segment sa, sb;
   fail.segment = sa.build(A.kind, A.start_rule, A.end_rule, A.X, A.unit_tangents, true);
@@ -39,12 +39,12 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
   evaluate_built(params,
                  SegmentRef{&sa, A.kind, A.start_rule, A.end_rule, A.radius, A.X, A.unit_tangents},
                  SegmentRef{&sb, B.kind, B.start_rule, B.end_rule, B.radius, B.X, B.unit_tangents},
-                 hist_old, out, K);
+                 hist_old, out, K, ends);
   return fail;
 }
 
 void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef& B,
-                    const double* hist_old, PairResult& out, double* K) {
+                    const double* hist_old, PairResult& out, double* K, Ends ends) {
   out = PairResult();
   const int hist_len = history_length(params);
   std::memcpy(out.history, hist_old, hist_len * sizeof(double));
@@ -57,7 +57,7 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   // Stage 1: kinematics. A pair that carries no force: its status, zero
   // residual (already) and tangent.
   Kinematics k;
-  const int geometric = contact_kinematics(params, A, B, hist_old, k, info, out.history);
+  const int geometric = contact_kinematics(params, A, B, hist_old, k, info, out.history, ends);
   // (Every status passes the finiteness guard: an OPEN pair's energy can
   // overflow too, with a huge regularization gap.)
   auto no_force = [&](int status) {
@@ -123,7 +123,7 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
     return;
   }
   if (params.tangent == B2B_TANGENT_FD && A.X && B.X) {
-    fd_tangent(params, A, B, hist_old, K);
+    fd_tangent(params, A, B, hist_old, K, ends);
     info[B2B_INFO_SYMMETRIC] = 0.0;
     out.overflow = out.overflow || !all_finite(K, kNdof * kNdof);
     return;

@@ -43,8 +43,10 @@ struct PairFailure {
 
 // Builds both segments, then evaluate_built(). Inputs are valid (checked at
 // the C boundary).
+// ends: an end contact (a node of A or B held, Ends); default the free pair.
 PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const SegmentInput& B,
-                          const double* hist_old, PairResult& out, double* K);
+                          const double* hist_old, PairResult& out, double* K,
+                          Ends ends = Ends());
 
 // The element on segments built with derivatives (a contact model builds each
 // segment once per update and evaluates every candidate pair on them).
@@ -52,7 +54,7 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
 // column-major, leading dimension 24, or null for no tangent; zero when the
 // pair is not active.
 void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef& B,
-                    const double* hist_old, PairResult& out, double* K);
+                    const double* hist_old, PairResult& out, double* K, Ends ends = Ends());
 
 }  // namespace pair
 }  // namespace b2b

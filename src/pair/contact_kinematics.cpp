@@ -38,7 +38,8 @@ bool at_cusp(double speed, double chord_length) { return !(speed > 0.005 * chord
 }  // namespace
 
 int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentRef& B,
-                       const double* hist_old, Kinematics& k, double* info, double* history) {
+                       const double* hist_old, Kinematics& k, double* info, double* history,
+                       Ends ends) {
   const curve::Segment &sa = *A.seg, &sb = *B.seg;
   // Length scales: segment chords, and the coordinates' magnitude (rounding).
   const double *a0 = sa.start_point(), *a1 = sa.end_point();
@@ -73,8 +74,15 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
   } else {
     chord_start(a0, a1, b0, b1, unit, &xi0, &eta0);
   }
+  k.end_a = ends.a;
+  k.end_b = ends.b;
+  info[B2B_INFO_END_A] = ends.a;
+  info[B2B_INFO_END_B] = ends.b;
+  if (ends.a) xi0 = ends.a;
+  if (ends.b) eta0 = ends.b;
+  const unsigned fixed = (ends.a ? kFixXi : kFixNone) | (ends.b ? kFixEta : kFixNone);
   const ClosestPoints cp =
-      closest_points(sa, sb, xi0, eta0, params.max_iterations, tol_length, unit);
+      closest_points(sa, sb, xi0, eta0, params.max_iterations, tol_length, unit, fixed);
   k.xi = cp.xi;
   k.eta = cp.eta;
   info[B2B_INFO_XI] = cp.xi;
@@ -96,7 +104,7 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     cross3(da, db, c);
     const double sa_speed = norm3(da), sb_speed = norm3(db), speeds = sa_speed * sb_speed;
     const bool cusp = at_cusp(sa_speed, len_a) || at_cusp(sb_speed, len_b);
-    if (cusp || !(norm3(c) > params.sin_parallel_angle * speeds)) {
+    if (cusp || (!ends.any() && !(norm3(c) > params.sin_parallel_angle * speeds))) {
       info[B2B_INFO_ANGLE] =
           speeds > 0.0 ? std::asin(std::fmin(1.0, norm3(c) / speeds)) * 180.0 / kPi : 0.0;
       return B2B_CONTACT_PARALLEL;
@@ -147,8 +155,27 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
   k.h22 = dot3(tb, tb) - dot3(du, tbd);
   k.h12 = -dot3(ta, tb);
   k.det = k.h11 * k.h22 - k.h12 * k.h12;
-  if (sin_angle < params.sin_parallel_angle || !(k.det > 1e-12 * na * na * nb * nb))
+  if (ends.any()) {
+    // An end contact: the held parameters drop out of the problem, and a
+    // node's distance to a segment is defined at any angle. What is left
+    // must be a minimum: the free parameter's own curvature h > 0 (none
+    // for two nodes).
+    if (ends.a && ends.b) {
+      k.h11 = k.h22 = 1.0;
+      k.h12 = 0.0;
+    } else if (ends.a) {
+      if (!(k.h22 > 1e-12 * nb * nb)) return B2B_CONTACT_PARALLEL;
+      k.h11 = 1.0;  // decoupled (linearization.cpp reads only h22)
+      k.h12 = 0.0;
+    } else {
+      if (!(k.h11 > 1e-12 * na * na)) return B2B_CONTACT_PARALLEL;
+      k.h22 = 1.0;
+      k.h12 = 0.0;
+    }
+    k.det = k.h11 * k.h22;
+  } else if (sin_angle < params.sin_parallel_angle || !(k.det > 1e-12 * na * na * nb * nb)) {
     return B2B_CONTACT_PARALLEL;
+  }
 
   // Sign-tracked normal and gap.
   const double rho = norm3(k.d);
@@ -169,7 +196,8 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     // difference of two O(1) terms that cancel to O(rho), so an error in n
     // came back multiplied by L / rho twice (relative error 150 at 1e-10 L,
     // found by the extremes suite against a long-double reference).
-    if (rho < unit * sin_angle) {
+    // (Not for an end contact: d is then normal to the free tangent only.)
+    if (!ends.any() && rho < unit * sin_angle) {
       const double c = norm3(cr) * (dot3(k.d, cr) < 0.0 ? -1.0 : 1.0);
       for (int i = 0; i < 3; ++i) k.n[i] = sign * cr[i] / c;
     } else {
@@ -185,8 +213,8 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
   history[kHistXi] = k.xi;
   history[kHistEta] = k.eta;
 
-  if (!owns(k.xi, na * unit, len_a, A.end_rule != B2B_END_NEIGHBOUR) ||
-      !owns(k.eta, nb * unit, len_b, B.end_rule != B2B_END_NEIGHBOUR))
+  if ((!ends.a && !owns(k.xi, na * unit, len_a, A.end_rule != B2B_END_NEIGHBOUR)) ||
+      (!ends.b && !owns(k.eta, nb * unit, len_b, B.end_rule != B2B_END_NEIGHBOUR)))
     return B2B_CONTACT_OUTSIDE;
   return B2B_CONTACT_OPEN;
 }

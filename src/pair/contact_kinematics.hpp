@@ -35,6 +35,17 @@ struct Kinematics {
   double gap = 0.0;
   // Hessian of phi = |d|^2/2 in units of `unit` = chord_A + chord_B
   double h11 = 0, h12 = 0, h22 = 0, det = 0, inv_unit = 0;
+  // End contact (doc/contact-element.md section 14): the parameter of A
+  // (B) held at this end of its segment, -1 or +1; 0: free.
+  int end_a = 0, end_b = 0;
+};
+
+// Which parameters of a pair are held at an end of their segment: a node of
+// A (end_a = -1 or +1, its xi) or of B (end_b, its eta) in contact with the
+// other beam; 0: free, the point-wise element of Wriggers and Zavarise.
+struct Ends {
+  int a = 0, b = 0;
+  bool any() const { return a != 0 || b != 0; }
 };
 
 // Fills k and the geometric entries of info (B2B_INFO_XI .. _GAP, ANGLE,
@@ -42,9 +53,13 @@ struct Kinematics {
 // evaluation tracks). Returns B2B_CONTACT_OPEN when the pair owns a closest
 // point with a normal (the force is decided by the caller), else the status
 // of a pair that carries no force (OUTSIDE, PARALLEL, NOT_CONVERGED,
-// NO_NORMAL). hist_old: a valid history.
+// NO_NORMAL). hist_old: a valid history. ends: the parameters held at an end
+// (an end contact: its free parameter is searched alone; a held one needs no
+// ownership test and no crossing angle, since the caller has decided that
+// the node is the closest point of its beam).
 int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentRef& B,
-                       const double* hist_old, Kinematics& k, double* info, double* history);
+                       const double* hist_old, Kinematics& k, double* info, double* history,
+                       Ends ends = Ends());
 
 }  // namespace pair
 }  // namespace b2b

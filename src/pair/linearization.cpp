@@ -67,8 +67,8 @@ int linearize_beam(unsigned used, const ContactGeometry& geo, double inv_det, Li
       }
       lin.B0[k] = b0;
       lin.B1[k] = b1;
-      lin.C0[k] = (h22 * b0 - h12 * b1) * inv_det;  // H^-1 B
-      lin.C1[k] = (h11 * b1 - h12 * b0) * inv_det;
+      lin.C0[k] = geo.fixed_xi ? 0.0 : (h22 * b0 - h12 * b1) * inv_det;  // H^-1 B
+      lin.C1[k] = geo.fixed_eta ? 0.0 : (h11 * b1 - h12 * b0) * inv_det;
     }
   }
   return k;

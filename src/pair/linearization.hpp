@@ -35,6 +35,10 @@ struct ContactGeometry {
   const double *ta, *tb;  // x_A,xi and x_B,eta
   const double *d, *n;
   double h11, h12, h22, det, inv_unit;
+  // An end contact's held parameters (Kinematics::end_a, end_b): they do
+  // not move with X (their row of -H^-1 B is zero), and H is the free
+  // parameter's own curvature (h12 = 0, the held diagonal 1).
+  bool fixed_xi = false, fixed_eta = false;
 };
 
 // used_a, used_b: curve::used_slots of A and B.

@@ -30,7 +30,7 @@ void main_term(double slope, const double* PA, const double* PB, const double* n
 }
 
 void fd_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
-                const double* hist_old, double* K) {
+                const double* hist_old, double* K, Ends ends) {
   const SegmentRef* in[2] = {&A, &B};
   double chord = 0.0, d[3];
   for (const SegmentRef* s : in) {
@@ -60,7 +60,8 @@ void fd_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
         moved.seg = &seg;
         moved.X = X;
         PairResult out;
-        evaluate_built(params, beam == 0 ? moved : A, beam == 0 ? B : moved, hist_old, out, nullptr);
+        evaluate_built(params, beam == 0 ? moved : A, beam == 0 ? B : moved, hist_old, out, nullptr,
+                       ends);
         std::memcpy(r[side], out.residual, sizeof r[side]);
       }
       if (!built) continue;

@@ -35,7 +35,7 @@ void main_term(double slope, const double* PA, const double* PB, const double* n
 // fixed. Needs the segments' patches (SegmentRef::X); a column whose
 // perturbed patch cannot be built keeps what K held.
 void fd_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
-                const double* hist_old, double* K);
+                const double* hist_old, double* K, Ends ends = Ends());
 
 }  // namespace pair
 }  // namespace b2b

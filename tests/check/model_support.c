@@ -184,6 +184,104 @@ static int self_excluded(const tst_scene *sc, int b, int sa, int sb) {
   return !(gap > excl);
 }
 
+/* The end-contact rule of the model (b2b_model.h, doc/contact-element.md
+ * section 14), written again from its documentation: a pair whose free
+ * evaluation is OUTSIDE holds a node of a segment that starts there (at a
+ * beam start, or at a joint of two straight segments) or ends an open beam,
+ * if the distance grows into the segment and into the one before the node;
+ * the closest of the candidates wins. */
+typedef struct {
+  int start_held, end_held, has_prev;
+  double prev_tangent[3];
+} seg_ends;
+
+static seg_ends ends_of(const tst_scene *sc, int b, int s, int n_seg) {
+  seg_ends e = {0, 0, 0, {0, 0, 0}};
+  const int closed = sc->closed[b];
+  e.has_prev = closed || s > 0;
+  e.end_held = !closed && s == n_seg - 1;
+  if (!e.has_prev) {
+    e.start_held = 1;
+  } else if (sc->kind[b] == B2B_CURVE_LINEAR) {
+    const int n = sc->count[b];
+    const int k0 = sc->first[b] + (s - 1 + n) % n, k1 = sc->first[b] + s;
+    for (int i = 0; i < 3; ++i)
+      e.prev_tangent[i] = 0.5 * (sc->x[3 * k1 + i] - sc->x[3 * k0 + i]);
+    e.start_held = 1;
+  }
+  return e;
+}
+
+static int held_end(double t, const seg_ends *e) {
+  if (t < -1.0 && e->start_held) return -1;
+  if (t >= 1.0 - 1e-12 && e->end_held) return 1;
+  return 0;
+}
+
+static int node_closest(const int seg[3], const double X[12], int end, const seg_ends *e,
+                        const double d[3]) {
+  double x[9];
+  char msg[B2B_ERRMSG_LEN] = "";
+  ok(b2b_segment_eval(seg[0], seg[1], seg[2], X, NULL, (double)end, x, NULL, NULL, msg,
+                      sizeof msg), msg);
+  const double *t = x + 3;
+  if (-end * (d[0] * t[0] + d[1] * t[1] + d[2] * t[2]) < 0.0) return 0;
+  const double *p = e->prev_tangent;
+  return !(end == -1 && e->has_prev && d[0] * p[0] + d[1] * p[1] + d[2] * p[2] > 0.0);
+}
+
+typedef struct {
+  const b2b_params *params;
+  const int *segs;
+  const double *X, *radii, *h0;
+  const seg_ends *ea, *eb;
+  int nh, found;
+  double best_dist;
+  double trial_info[32]; /* of the last attempt */
+  tst_contact best;
+} end_search;
+
+static int end_attempt(end_search *es, int ca, int cb) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  const int ends[2] = {ca, cb};
+  double h1[16];
+  int status;
+  tst_contact c;
+  ok(b2b_pair_eval_ends(es->params, es->segs, es->X, NULL, es->radii, ends, es->h0, h1, es->nh,
+                        &status, c.info, c.residual, NULL, 24, msg, sizeof msg), msg);
+  memcpy(es->trial_info, c.info, sizeof c.info);
+  if (status != B2B_CONTACT_ACTIVE && status != B2B_CONTACT_OPEN) return status;
+  double d[3], e[3];
+  for (int i = 0; i < 3; ++i) {
+    d[i] = c.info[B2B_INFO_POINT_A + i] - c.info[B2B_INFO_POINT_B + i];
+    e[i] = -d[i];
+  }
+  if (ca && !node_closest(es->segs, es->X, ca, es->ea, d)) return status;
+  if (cb && !node_closest(es->segs + 3, es->X + 12, cb, es->eb, e)) return status;
+  const double dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (es->found && !(dist < es->best_dist)) return status;
+  es->found = 1;
+  es->best_dist = dist;
+  es->best = c;
+  return status;
+}
+
+/* 1 and *c the end contact if the pair (free evaluation OUTSIDE with info)
+ * owns one. */
+static int end_contact(end_search *es, const double *info, tst_contact *c) {
+  const int ca = held_end(info[B2B_INFO_XI], es->ea), cb = held_end(info[B2B_INFO_ETA], es->eb);
+  if (ca && end_attempt(es, ca, 0) == B2B_CONTACT_OUTSIDE) {
+    const int cb2 = held_end(es->trial_info[B2B_INFO_ETA], es->eb);
+    if (cb2) end_attempt(es, ca, cb2);
+  }
+  if (cb && end_attempt(es, 0, cb) == B2B_CONTACT_OUTSIDE) {
+    const int ca2 = held_end(es->trial_info[B2B_INFO_XI], es->ea);
+    if (ca2) end_attempt(es, ca2, cb);
+  }
+  if (es->found) *c = es->best;
+  return es->found;
+}
+
 int tst_brute_force(const tst_scene *sc, const b2b_params *params, int all_pairs,
                     tst_contact *out, int max) {
   char msg[B2B_ERRMSG_LEN] = "";
@@ -233,6 +331,14 @@ int tst_brute_force(const tst_scene *sc, const b2b_params *params, int all_pairs
           tst_contact c;
           ok(b2b_pair_eval(params, segs, XX, NULL, radii, h0, h1, nh, &status, c.info, c.residual,
                            NULL, 24, msg, sizeof msg), msg);
+          if (status == B2B_CONTACT_OUTSIDE) {
+            const seg_ends ea = ends_of(sc, ba, sa, first_seg[ba + 1] - first_seg[ba]);
+            const seg_ends eb = ends_of(sc, bb, sb, first_seg[bb + 1] - first_seg[bb]);
+            end_search es = {params, segs, XX, radii, h0, &ea, &eb, nh, 0, 0.0, {0}, c};
+            if (end_contact(&es, c.info, &c)) status = c.info[B2B_INFO_NORMAL_FORCE] > 0.0
+                                                          ? B2B_CONTACT_ACTIVE
+                                                          : B2B_CONTACT_OPEN;
+          }
           if (status != B2B_CONTACT_ACTIVE) continue;
           c.pair[0] = ba;
           c.pair[1] = sa;
