@@ -188,13 +188,16 @@ enum {
 };
 #define B2B_MODEL_COUNTS_LEN 16
 
-/* Entries of totals[] of b2b_model_stats. Values are fixed. */
+/* Entries of totals[] of b2b_model_stats. Values are fixed. Each is defined
+ * after every update: the sums are 0 when nothing is active. */
 enum {
   B2B_TOTAL_ENERGY = 0,            /* contact potential of the active contacts */
   B2B_TOTAL_DISSIPATION_STEP = 1,  /* frictional dissipation of the last update's step */
   B2B_TOTAL_DISSIPATION = 2,       /* committed total + the step's */
   B2B_TOTAL_NORMAL_FORCE = 3,      /* sum of f_N over the active contacts */
-  B2B_TOTAL_MIN_GAP = 4            /* smallest gap of the evaluated pairs (0 if none) */
+  B2B_TOTAL_MIN_GAP = 4            /* smallest gap of the pairs that own a closest point
+                                      (active or open); DBL_MAX when there is none
+                                      (counts ACTIVE + OPEN = 0): nothing is near */
 };
 #define B2B_MODEL_TOTALS_LEN 8
 

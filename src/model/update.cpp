@@ -10,6 +10,7 @@
 //   7. the active set, sorted by pair, and the trial histories
 // Nothing of the model changes unless all of it succeeds.
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 
@@ -528,7 +529,9 @@ void Updater::finish() {
   }
   trial.dissipation = m.committed_.dissipation + totals[B2B_TOTAL_DISSIPATION_STEP];
   totals[B2B_TOTAL_DISSIPATION] = trial.dissipation;
-  totals[B2B_TOTAL_MIN_GAP] = min_gap == HUGE_VAL ? 0.0 : min_gap;
+  // No pair owns a closest point: the gap is unbounded, reported finite
+  // (b2b_model.h), and never as 0, which would read as touching.
+  totals[B2B_TOTAL_MIN_GAP] = min_gap == HUGE_VAL ? DBL_MAX : min_gap;
 
   if (rebuilt_) {
     m.candidates_.swap(new_candidates_);
