@@ -86,6 +86,17 @@
  *     the rest are open ("far").
  *   Ownership at joints is the element's rule, so a contact on a joint, or
  *     where nodes of both beams coincide, is counted once.
+ *   End contacts: a pair whose closest point lies beyond its segments
+ *     (OUTSIDE) holds the node it points to, if the segment starts there
+ *     (at a beam start, or at a joint of two LINEAR segments, where the
+ *     tangent turns) or ends an open beam there, and the node is the
+ *     closest point of its beam to first order (the distance grows into the
+ *     segment and into the one before the node): a convex joint of straight
+ *     segments or a beam end touching another beam is then an active
+ *     contact (node-to-segment, or node-to-node), evaluated as
+ *     b2b_pair_eval_ends, with friction and handover like any other;
+ *     info[B2B_INFO_END_A] / _END_B name the held node
+ *     (doc/contact-element.md section 14).
  *   Handover: a contact that was active at the last commit and whose point
  *     now lies outside its pair (the element reports xi or eta outside
  *     [-1, 1)) moves with its committed history to the neighbouring segment
@@ -175,7 +186,7 @@ enum {
   B2B_COUNT_EVALUATED = 1,      /* pairs evaluated by the element (near pairs + handovers) */
   B2B_COUNT_ACTIVE = 2,         /* active contacts */
   B2B_COUNT_OPEN = 3,           /* evaluated, owned, no force */
-  B2B_COUNT_OUTSIDE = 4,        /* evaluated, point on another pair */
+  B2B_COUNT_OUTSIDE = 4,        /* evaluated, point on another pair (no end contact either) */
   B2B_COUNT_PARALLEL = 5,
   B2B_COUNT_NOT_CONVERGED = 6,
   B2B_COUNT_NO_NORMAL = 7,
