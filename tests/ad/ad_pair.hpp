@@ -861,8 +861,18 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
     out.friction = true;
     info[B2B_INFO_SYMMETRIC] = 0.0;
     S e1[3], e2[3];
-    const S speed = norm3(a);
-    for (int i = 0; i < 3; ++i) e1[i] = a[i] / speed;
+    if (!any_held) {
+      const S speed = norm3(a);
+      for (int i = 0; i < 3; ++i) e1[i] = a[i] / speed;
+    } else {
+      // an end contact: the free beam's tangent (A's with both held) in the
+      // tangent plane, (I - n n^T) t / |(I - n n^T) t| (b2b_pair.h, Transport)
+      const S* t = (ha && !hb) ? b : a;
+      const S tn = dot3(n, t);
+      for (int i = 0; i < 3; ++i) e1[i] = t[i] - tn * n[i];
+      const S len = norm3(e1);
+      for (int i = 0; i < 3; ++i) e1[i] = e1[i] / len;
+    }
     cross3(n, e1, e2);
     int state = B2B_FRICTION_STICK;
     const bool anchored =
