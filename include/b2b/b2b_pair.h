@@ -149,7 +149,10 @@
  *   Transport: the committed force is stored by its components in the
  *     orthonormal frame e1 = x_A,xi / |x_A,xi|, e2 = n x e1 at the contact
  *     and rebuilt in the current frame, so it stays in the tangent plane,
- *     keeps its magnitude and turns with the beams (objective).
+ *     keeps its magnitude and turns with the beams (objective). In an end
+ *     contact (b2b_pair_eval_ends) a held parameter's tangent is not normal
+ *     to n: e1 is then the free beam's tangent (A's with both held)
+ *     projected onto the tangent plane, (I - n n^T) t / |(I - n n^T) t|.
  *   Return mapping: T_trial = T_n + eps_T g_T; stick if |T_trial| <= mu f_N
  *     (T = T_trial), else slip: T = mu f_N T_trial / |T_trial|, with slip
  *     increment (|T_trial| - mu f_N) / eps_T along T and dissipated energy

@@ -88,8 +88,9 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   }
   // Friction: + [P_A^T T; -P_B^T T]. mu = 0 skips all of it.
   const bool friction = params.friction > 0.0;
-  const FrictionContact fc{&sa,    &sb,  k.xi, k.eta,        k.pa.xd,   k.pa.xdd,
-                           k.pb.xd, k.n, k.rho_signed, law.force, law.slope};
+  const FrictionContact fc{&sa,       &sb,      k.xi,     k.eta,        k.pa.xd,
+                           k.pa.xdd,  k.pb.xd,  k.n,      k.rho_signed, law.force,
+                           law.slope, k.pb.xdd, k.end_a,  k.end_b};
   FrictionResult fr;
   if (friction) {
     fr = friction_force(params, fc, hist_old);

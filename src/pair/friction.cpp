@@ -17,7 +17,24 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   FrictionResult fr;
   fr.state = B2B_FRICTION_STICK;
   fr.speed_a = norm3(c.ta);
+  fr.frame_norm = fr.speed_a;
   for (int i = 0; i < 3; ++i) fr.e1[i] = c.ta[i] / fr.speed_a;
+  if (c.end_a || c.end_b) {
+    // An end contact: the held beam's tangent is not normal to n (the node's
+    // distance is minimised along the other beam only), and x_A,xi/|x_A,xi|
+    // with n x e1 was then no orthonormal frame of the tangent plane: the
+    // committed force came back changed where nothing had moved, with a
+    // normal part (found by check_pair_ends, committed_friction_force_is_kept).
+    // e1 is the free beam's tangent, projected onto the tangent plane (the
+    // projection only removes rounding there; with both held, A's).
+    fr.projected = true;
+    fr.frame_on_b = c.end_a && !c.end_b;
+    const double* t = fr.frame_on_b ? c.tb : c.ta;
+    const double tn = dot3(c.n, t);
+    for (int i = 0; i < 3; ++i) fr.e1[i] = t[i] - tn * c.n[i];
+    fr.frame_norm = norm3(fr.e1);
+    for (int i = 0; i < 3; ++i) fr.e1[i] /= fr.frame_norm;
+  }
   cross3(c.n, fr.e1, fr.e2);
   fr.anchored = hist_old[kHistTag] == kHistTagV1 && hist_old[kHistInContact] == 1.0;
   if (!fr.anchored) return fr;  // a new contact: stick, no force yet
@@ -95,9 +112,17 @@ void add_friction_tangent(const Params& p, const FrictionContact& c, const Frict
     }
     // de1 = (I - e1 e1^T) d(x_A,xi) / |x_A,xi|, d(x_A,xi) = P_A,xi + x_A,xixi dxi
     double dta[3], de1[3], de2[3], t1[3], t2[3];
-    for (int i = 0; i < 3; ++i) dta[i] = (on_a ? PAd[3 * cc + i] : 0.0) + c.tad[i] * dxi[k];
+    if (fr.frame_on_b)  // d(x_B,eta) = P_B,eta + x_B,etaeta deta
+      for (int i = 0; i < 3; ++i) dta[i] = (on_a ? 0.0 : PBd[3 * cc + i]) + c.tbd[i] * deta[k];
+    else
+      for (int i = 0; i < 3; ++i) dta[i] = (on_a ? PAd[3 * cc + i] : 0.0) + c.tad[i] * dxi[k];
+    if (fr.projected) {  // p = (I - n n^T) t: dp = (I - n n^T) dt - (n.t) dn - n (dn.t)
+      const double* t = fr.frame_on_b ? c.tb : c.ta;
+      const double tn = dot3(n, t), ndt = dot3(n, dta), dnt = dot3(dn, t);
+      for (int i = 0; i < 3; ++i) dta[i] -= ndt * n[i] + tn * dn[i] + dnt * n[i];
+    }
     const double e1dta = dot3(fr.e1, dta);
-    for (int i = 0; i < 3; ++i) de1[i] = (dta[i] - e1dta * fr.e1[i]) / fr.speed_a;
+    for (int i = 0; i < 3; ++i) de1[i] = (dta[i] - e1dta * fr.e1[i]) / fr.frame_norm;
     cross3(dn, fr.e1, t1);  // de2 = dn x e1 + n x de1
     cross3(n, de1, t2);
     for (int i = 0; i < 3; ++i) de2[i] = t1[i] + t2[i];

@@ -22,6 +22,11 @@ struct FrictionContact {
   const double* n;         // unit normal from B to A
   double rho_signed;       // signed axis distance; 0 where the normal is the history's
   double normal_force, normal_slope;  // f_N > 0 and df_N/dg
+  // End contact (Kinematics::end_a, end_b): a held parameter's tangent is
+  // not normal to n, so the frame is then built from the projection of a
+  // tangent onto the tangent plane (frame_tangent); tbd = x_B,etaeta.
+  const double* tbd = nullptr;
+  int end_a = 0, end_b = 0;
 };
 
 struct FrictionResult {
@@ -33,6 +38,10 @@ struct FrictionResult {
   double force_e1 = 0.0, force_e2 = 0.0;  // T in the current frame: the new history
   // kept for the tangent
   double e1[3] = {0, 0, 0}, e2[3] = {0, 0, 0}, speed_a = 0.0;
+  // the frame's tangent: x_B,eta for an end contact with A held and B free,
+  // else x_A,xi; projected onto the tangent plane for an end contact
+  bool frame_on_b = false, projected = false;
+  double frame_norm = 0.0;  // |(I - n n^T) t| (speed_a where not projected)
   double committed_e1 = 0.0, committed_e2 = 0.0;  // committed force in the frame
   double xi_n = 0.0, eta_n = 0.0;
   double anchor_gap[3] = {0, 0, 0};  // x_A(xi_n) - x_B(eta_n)

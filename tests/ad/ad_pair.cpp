@@ -92,16 +92,16 @@ int eval_in(const b2bad::Settings& st, const b2bad::SegmentSpec* spec, const dou
             const double* radii, const double* hist_old, double* hist_new, int hist_len,
             int flags, int* contact_status, double* info, double* residual, double* tangent,
             int ldk, double* energy_gradient, double* value_mismatch, const double* at,
-            char* errmsg, int errmsg_len) {
+            const int* held, char* errmsg, int errmsg_len) {
   using DR = b2bad::Dual<kNdof, R>;
   static thread_local b2bad::Result<R> rd;  // large: kept off the stack
   static thread_local b2bad::Result<DR> rr;
-  if (int e = b2bad::evaluate(st, spec, X, radii, hist_old, flags, at, rd))
+  if (int e = b2bad::evaluate(st, spec, X, radii, hist_old, flags, at, rd, held))
     return fail(errmsg, errmsg_len, e, "a patch has a zero element length or direction");
   const bool need_dual = (tangent && rd.active && st.tangent != B2B_TANGENT_MAIN) ||
                          energy_gradient || value_mismatch;
   if (need_dual) {
-    if (int e = b2bad::evaluate(st, spec, X, radii, hist_old, flags, at, rr))
+    if (int e = b2bad::evaluate(st, spec, X, radii, hist_old, flags, at, rr, held))
       return fail(errmsg, errmsg_len, e, "a patch has a zero element length or direction");
   }
 
@@ -150,7 +150,8 @@ int eval(const b2b_params* params, const int* segments, const double* X,
          const double* end_tangents, const double* radii, const double* hist_old,
          double* hist_new, int hist_len, int flags, int* contact_status, double* info,
          double* residual, double* tangent, int ldk, double* energy_gradient,
-         double* value_mismatch, const double* at, char* errmsg, int errmsg_len) {
+         double* value_mismatch, const double* at, const int* held, char* errmsg,
+         int errmsg_len) {
   if (!params || !segments || !X || !radii || !hist_old || !hist_new || !contact_status ||
       !info || !residual)
     return fail(errmsg, errmsg_len, B2B_ERR_NULL, "a required argument is NULL");
@@ -164,16 +165,20 @@ int eval(const b2b_params* params, const int* segments, const double* X,
   for (int i = 0; i < hist_len; ++i)
     if (!std::isfinite(hist_old[i]))
       return fail(errmsg, errmsg_len, B2B_ERR_NONFINITE, "hist_old[%d] is not finite", i);
+  if (held)
+    for (int b = 0; b < 2; ++b)
+      if (held[b] < -1 || held[b] > 1)
+        return fail(errmsg, errmsg_len, B2B_ERR_RANGE, "ends[%d] is %d", b, held[b]);
   b2bad::SegmentSpec spec[2];
   if (int e = check_and_spec(segments, X, end_tangents, radii, spec, errmsg, errmsg_len))
     return e;
   if (flags & b2bad::kLongDouble)
     return eval_in<long double>(st, spec, X, radii, hist_old, hist_new, hist_len, flags,
                                 contact_status, info, residual, tangent, ldk, energy_gradient,
-                                value_mismatch, at, errmsg, errmsg_len);
+                                value_mismatch, at, held, errmsg, errmsg_len);
   return eval_in<double>(st, spec, X, radii, hist_old, hist_new, hist_len, flags,
                          contact_status, info, residual, tangent, ldk, energy_gradient,
-                         value_mismatch, at, errmsg, errmsg_len);
+                         value_mismatch, at, held, errmsg, errmsg_len);
 }
 
 }  // namespace
@@ -190,7 +195,7 @@ int b2b_ad_pair_eval_ex(const b2b_params* params, const int segments[6], const d
   try {
     return eval(params, segments, X, end_tangents, radii, hist_old, hist_new, hist_len, flags,
                 contact_status, info, residual, tangent, ldk, energy_gradient, value_mismatch,
-                closest_points, errmsg, errmsg_len);
+                closest_points, nullptr, errmsg, errmsg_len);
   } catch (const std::exception& e) {
     return fail(errmsg, errmsg_len, B2B_ERR_INTERNAL, "exception: %s", e.what());
   } catch (...) {
@@ -206,6 +211,24 @@ int b2b_ad_pair_eval(const b2b_params* params, const int segments[6], const doub
   return b2b_ad_pair_eval_ex(params, segments, X, end_tangents, radii, hist_old, hist_new,
                              hist_len, 0, contact_status, info, residual, tangent, ldk, nullptr,
                              nullptr, nullptr, errmsg, errmsg_len);
+}
+
+int b2b_ad_pair_eval_ends(const b2b_params* params, const int segments[6], const double X[24],
+                          const double end_tangents[12], const double radii[2],
+                          const int ends[2], const double* hist_old, double* hist_new,
+                          int hist_len, int flags, int* contact_status, double info[32],
+                          double residual[24], double* tangent, int ldk,
+                          double energy_gradient[24], char* errmsg, int errmsg_len) {
+  if (!ends) return fail(errmsg, errmsg_len, B2B_ERR_NULL, "ends is NULL");
+  try {
+    return eval(params, segments, X, end_tangents, radii, hist_old, hist_new, hist_len, flags,
+                contact_status, info, residual, tangent, ldk, energy_gradient, nullptr, nullptr,
+                ends, errmsg, errmsg_len);
+  } catch (const std::exception& e) {
+    return fail(errmsg, errmsg_len, B2B_ERR_INTERNAL, "exception: %s", e.what());
+  } catch (...) {
+    return fail(errmsg, errmsg_len, B2B_ERR_INTERNAL, "unknown exception");
+  }
 }
 
 int b2b_ad_curve_kind_count(void) { return B2B_CURVE_HERMITE_NODAL_WEIGHTED + 1; }

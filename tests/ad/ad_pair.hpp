@@ -476,6 +476,67 @@ inline Closest newton(const Segment<double>& A, const Segment<double>& B, double
   return cp;
 }
 
+// End contact (b2b_pair.h, "End contact"): one parameter is held at a node
+// (-1 or +1) and the other minimises the distance alone. A plain 1-D Newton
+// on phi(t) = |x_F(t) - p|^2 / 2, p the held node, written here on its own:
+// the curvature shifted up to a floor where it is not positive (then a
+// descent step), the step limited to half a segment, Armijo backtracking
+// while the step is large, the parameter kept in [-3, 3]. Converged when
+// |phi'| <= tol |x_F'| (the same length criterion as the 2-D search), or
+// after a plain full step below 16 eps. held_a: A's parameter is held (t is
+// eta), else B's (t is xi).
+inline Closest newton_held(const Segment<double>& A, const Segment<double>& B, double xi,
+                           double eta, bool held_a, int max_iterations, double tol_len) {
+  Closest cp;
+  const Segment<double>& F = held_a ? B : A;
+  double p[3];
+  point(held_a ? A : B, held_a ? xi : eta, p, (double*)nullptr, (double*)nullptr);
+  double t = held_a ? eta : xi;
+  auto phi = [&](double u) {
+    double x[3], d[3];
+    point(F, u, x, (double*)nullptr, (double*)nullptr);
+    for (int i = 0; i < 3; ++i) d[i] = x[i] - p[i];
+    return 0.5 * dot3(d, d);
+  };
+  bool at_rounding = false;
+  for (int it = 0;; ++it) {
+    double x[3], xd[3], xdd[3], d[3];
+    point(F, t, x, xd, xdd);
+    for (int i = 0; i < 3; ++i) d[i] = x[i] - p[i];
+    const double g = dot3(d, xd), speed = norm3(xd), rho = norm3(d);
+    const double tol = std::fmin(tol_len, 1e-13 * rho) + 4.0 * DBL_EPSILON * rho;
+    if (std::fabs(g) <= tol * speed || (it > 0 && at_rounding)) {
+      cp.converged = true;
+      cp.iterations = it;
+      break;
+    }
+    if (it == max_iterations) {
+      cp.iterations = it;
+      break;
+    }
+    double h = dot3(xd, xd) + dot3(d, xdd);
+    const double floor = 1e-13 * speed * speed;
+    const bool shifted = h < floor;
+    if (shifted) h = floor + std::fabs(h);
+    double step = -g / h;
+    const double m = std::fabs(step);
+    if (m > 1.0) step /= m;
+    double alpha = 1.0;
+    if (m > 1e-3) {
+      const double f0 = 0.5 * dot3(d, d);
+      for (int k = 0; k < 40; ++k) {
+        if (phi(clampd(t + alpha * step, -3.0, 3.0)) <= f0 + 1e-4 * alpha * g * step) break;
+        alpha *= 0.5;
+      }
+    }
+    at_rounding = !shifted && alpha == 1.0 && m <= 16.0 * DBL_EPSILON;
+    t = clampd(t + alpha * step, -3.0, 3.0);
+  }
+  cp.xi = held_a ? xi : t;
+  cp.eta = held_a ? t : eta;
+  return cp;
+}
+
 // ------------------------------------------------------------- the pair
 
 template <class S>
@@ -500,7 +561,13 @@ enum { kFreezeClosestPoints = 1, kLongDouble = 2 };
 // reported here).
 template <class S>
 int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const double* radii,
-             const double* hist_old, int flags, const double* at, Result<S>& out) {
+             const double* hist_old, int flags, const double* at, Result<S>& out,
+             const int* held = nullptr) {
+  // An end contact (held: A's and B's parameter held at -1 or +1, 0 free):
+  // the held parameters are constants of the problem, in the search, in the
+  // scalar Newton steps (so their derivatives are zero) and in the force.
+  const int ha = held ? held[0] : 0, hb = held ? held[1] : 0;
+  const bool any_held = ha != 0 || hb != 0;
   out = Result<S>();
   std::memcpy(out.hist, hist_old, st.hist_len * sizeof(double));
   for (int i = 8; i < st.hist_len; ++i) out.hist[i] = 0.0;  // forgotten unless active
@@ -574,15 +641,25 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
   } else {
     chord_start(gA, gB, &xi0, &eta0);
   }
+  if (ha) xi0 = ha;
+  if (hb) eta0 = hb;
   Closest cp;
   if (at) {  // given closest points (a diagnostic): no search
     cp.converged = true;
-    cp.xi = at[0];
-    cp.eta = at[1];
+    cp.xi = ha ? ha : at[0];
+    cp.eta = hb ? hb : at[1];
+  } else if (ha && hb) {  // node to node: nothing to search
+    cp.converged = true;
+    cp.xi = ha;
+    cp.eta = hb;
+  } else if (any_held) {
+    cp = newton_held(gA, gB, xi0, eta0, ha != 0, st.max_iterations, tol_local);
   } else {
     cp = newton(gA, gB, xi0, eta0, st.max_iterations, tol_local);
   }
   double* info = out.info;
+  info[B2B_INFO_END_A] = ha;
+  info[B2B_INFO_END_B] = hb;
   info[B2B_INFO_XI] = cp.xi;
   info[B2B_INFO_ETA] = cp.eta;
   info[B2B_INFO_ITERATIONS] = cp.iterations;
@@ -598,7 +675,7 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
     const double na = norm3(a), nb = norm3(b);
     const double la = chord[0] / s, lb = chord[1] / s;  // local units, as a, b
     const bool cusp = !(na > 0.005 * la) || !(nb > 0.005 * lb);
-    if (cusp || !(norm3(cr) > st.sin_parallel * na * nb))
+    if (cusp || (!any_held && !(norm3(cr) > st.sin_parallel * na * nb)))
       out.status = B2B_CONTACT_PARALLEL;
     else
       out.status = (std::fabs(cp.xi) > 1.0 || std::fabs(cp.eta) > 1.0) ? B2B_CONTACT_OUTSIDE
@@ -632,7 +709,15 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
     const double h12 = -dot3(a, b);
     const double det = h11 * h22 - h12 * h12;
     info[B2B_INFO_ANGLE] = std::atan2(sin_angle, cos_angle) * 180.0 / 3.14159265358979323846;
-    if (sin_angle < st.sin_parallel || !(det > 1e-12 * na * na * nb * nb)) {
+    // An end contact has no crossing-angle threshold: PARALLEL only where
+    // the free parameter's 1-D problem is singular (its curvature not
+    // positive, the 1-D analogue of det > 1e-12 |a|^2 |b|^2).
+    const bool singular = any_held ? (ha && hb ? false
+                                               : ha ? !(h22 > 1e-12 * nb * nb)
+                                                    : !(h11 > 1e-12 * na * na))
+                                   : (sin_angle < st.sin_parallel ||
+                                      !(det > 1e-12 * na * na * nb * nb));
+    if (singular) {
       out.status = B2B_CONTACT_PARALLEL;
       return B2B_OK;
     }
@@ -641,7 +726,18 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
   // Two plain Newton steps in the scalar type from the converged point: the
   // values are polished, and the derivatives become -H^-1 dr/dX.
   S xi = cp.xi, eta = cp.eta;
-  for (int step = 0; step < 2; ++step) {
+  for (int step = 0; step < 2 && any_held; ++step) {  // the held ones stay constants
+    if (ha && hb) break;
+    S xa[3], a[3], a2[3], xb[3], b[3], b2[3], d[3];
+    point(sA, xi, xa, a, a2);
+    point(sB, eta, xb, b, b2);
+    for (int i = 0; i < 3; ++i) d[i] = xa[i] - xb[i];
+    if (ha)
+      eta = eta - (-dot3(d, b)) / (dot3(b, b) - dot3(d, b2));
+    else
+      xi = xi - dot3(d, a) / (dot3(a, a) + dot3(d, a2));
+  }
+  for (int step = 0; step < 2 && !any_held; ++step) {
     S xa[3], a[3], a2[3], xb[3], b[3], b2[3], d[3];
     point(sA, xi, xa, a, a2);
     point(sB, eta, xb, b, b2);
@@ -654,8 +750,8 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
     eta = eta - (h11 * r2 - h12 * r1) / det;
   }
   if (at) {  // keep the given values, with the derivatives of the steps
-    xi = with_value(xi, at[0]);
-    eta = with_value(eta, at[1]);
+    if (!ha) xi = with_value(xi, at[0]);
+    if (!hb) eta = with_value(eta, at[1]);
   }
   if (flags & kFreezeClosestPoints) {  // a deliberately wrong reference
     xi = S(val(xi));
@@ -718,8 +814,9 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
   {
     const double av[3] = {dval(a[0]), dval(a[1]), dval(a[2])};
     const double bv[3] = {dval(b[0]), dval(b[1]), dval(b[2])};
-    if (!owns(dval(xi), norm3(av), chord[0] / s, spec[0].end_rule != B2B_END_NEIGHBOUR) ||
-        !owns(dval(eta), norm3(bv), chord[1] / s, spec[1].end_rule != B2B_END_NEIGHBOUR)) {
+    // a held parameter needs no ownership test (the caller's decision)
+    if ((!ha && !owns(dval(xi), norm3(av), chord[0] / s, spec[0].end_rule != B2B_END_NEIGHBOUR)) ||
+        (!hb && !owns(dval(eta), norm3(bv), chord[1] / s, spec[1].end_rule != B2B_END_NEIGHBOUR))) {
       out.status = B2B_CONTACT_OUTSIDE;
       return B2B_OK;
     }
@@ -764,8 +861,18 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
     out.friction = true;
     info[B2B_INFO_SYMMETRIC] = 0.0;
     S e1[3], e2[3];
-    const S speed = norm3(a);
-    for (int i = 0; i < 3; ++i) e1[i] = a[i] / speed;
+    if (!any_held) {
+      const S speed = norm3(a);
+      for (int i = 0; i < 3; ++i) e1[i] = a[i] / speed;
+    } else {
+      // an end contact: the free beam's tangent (A's with both held) in the
+      // tangent plane, (I - n n^T) t / |(I - n n^T) t| (b2b_pair.h, Transport)
+      const S* t = (ha && !hb) ? b : a;
+      const S tn = dot3(n, t);
+      for (int i = 0; i < 3; ++i) e1[i] = t[i] - tn * n[i];
+      const S len = norm3(e1);
+      for (int i = 0; i < 3; ++i) e1[i] = e1[i] / len;
+    }
     cross3(n, e1, e2);
     int state = B2B_FRICTION_STICK;
     const bool anchored =

@@ -69,6 +69,21 @@ int b2b_ad_pair_eval_ex(const b2b_params *params, const int segments[6], const d
                         double *value_mismatch, const double closest_points[2], char *errmsg,
                         int errmsg_len);
 
+/* The end contact of b2b_pair_eval_ends (b2b_pair.h, "End contact"):
+ * b2b_ad_pair_eval_ex's outputs with the parameter of A (ends[0]) and/or B
+ * (ends[1]) held at -1 or +1 (0: free). The held parameter is a constant of
+ * the reference: its own 1-D search (or none, node to node), the scalar
+ * Newton steps move only the free parameter, so the held one's derivative is
+ * zero by construction; no crossing-angle threshold (PARALLEL only for a
+ * singular 1-D problem or a cusp); no ownership test for a held parameter.
+ * ends = {0, 0} is b2b_ad_pair_eval_ex. */
+int b2b_ad_pair_eval_ends(const b2b_params *params, const int segments[6], const double X[24],
+                          const double end_tangents[12], const double radii[2],
+                          const int ends[2], const double *hist_old, double *hist_new,
+                          int hist_len, int flags, int *contact_status, double info[32],
+                          double residual[24], double *tangent, int ldk,
+                          double energy_gradient[24], char *errmsg, int errmsg_len);
+
 /* The curve kinds the reference implements: kinds 0 .. count-1. */
 int b2b_ad_curve_kind_count(void);
 
