@@ -32,7 +32,9 @@ void Model::set_group_pair(int ga, int gb, const pair::Params& p) {
     }
     return;
   }
-  group_pairs_.reserve(group_pairs_.size() + 1);  // both insertions or neither
+  // both insertions or neither: room first (growing geometrically)
+  if (group_pairs_.size() == group_pairs_.capacity())
+    group_pairs_.reserve(2 * group_pairs_.size() + 1);
   gp_by_host_.emplace(std::make_pair(ga, gb), static_cast<int>(group_pairs_.size()));
   group_pairs_.push_back(GroupPair{ga, gb, p, pair::history_length(p)});
 }
