@@ -47,25 +47,48 @@
  * Self-contact (b2b_model_set_self_contact) is off by default. When on, two
  * segments of the same beam are paired only if they share no host node and
  * the arc length between them, measured along the beam's chords in the
- * configuration of the first update, exceeds the exclusion length (default,
+ * configuration of the first update that is committed (precisely: the first
+ * update after finalize measures them; a revert before any commit forgets
+ * them, and the next update measures again; a restore brings the restart
+ * buffer's), exceeds the exclusion length (default,
  * exclusion_length < 0: 4 r, longer than the pi r of the tightest fold a
  * solid rod of radius r can make, so neighbours on a bent beam are never
  * read as contact). It needs the group pair (g, g) of the beam's group g.
  *
- * Options (b2b_model_set_real / _set_int; at any time after create)
+ * Options (b2b_model_set_real / _set_int; at any time after create; each
+ * says what a change after finalize does: nothing the model keeps goes stale)
  *   "search_margin"  real  default: the largest radius of the model's beams.
  *                          The Verlet skin s of the broad phase (> 0).
+ *                          After finalize: the next update searches again
+ *                          with the new margin.
  *   "threads"        int   0 (default): as many as OpenMP offers; n >= 1:
  *                          at most n threads for this model's updates.
+ *                          After finalize: from the next update on (results
+ *                          do not depend on it).
  *   "max_handover_hops" int  16: segments a contact may travel in one
  *                          update (along both beams together), 1 .. 1000.
+ *                          After finalize: from the next update on (no
+ *                          result of an update is kept that depends on it
+ *                          other than through the histories it committed).
  *   "message_base"   int   0: beam, segment, node and contact numbers in
  *                          messages are 0-based (C); 1: 1-based (the Fortran
  *                          module sets it, so its callers read their own
  *                          numbers). Results are always 0-based in C.
+ *                          After finalize: from the next message on.
+ *   "max_candidates" int   100000000 (default), >= 1: the most pairs of
+ *                          segments one broad-phase search may keep (its
+ *                          memory: about 12 bytes per pair). A search that
+ *                          finds more stops and the update fails with
+ *                          B2B_ERR_SIZE, its message naming the option; the
+ *                          model is unchanged (a dense scene, all nodes on
+ *                          one point, or a search margin far too large).
+ *                          After finalize: the next update searches again
+ *                          under the new bound.
  *
  * Update (b2b_model_update)
  * -------------------------
+ * Memory: an update that cannot allocate what it needs (on any of its
+ * threads) fails with B2B_ERR_NOMEM and leaves the model unchanged.
  * x holds the current coordinates of all host nodes: node k at
  * x[ldx*k + 0..2] (a 3 x n_cols column-major array with leading dimension
  * ldx >= 3, so FEAP's x(ndm, numnp) works as is); n_cols >= n_nodes. Only
@@ -121,7 +144,8 @@
  * Assembly (the translational dofs of the host's nodes)
  *   eq: an int array eq[ldeq*k + i] (i = 0, 1, 2 for x, y, z of node k),
  *   ldeq >= 3 (so an id(6, numnp) of a 6-dof beam code works as is): the
- *   host's equation numbers, numbered from eq_base (0 for C style, 1 for
+ *   host's equation numbers, numbered from eq_base (> INT_MIN, else
+ *   B2B_ERR_RANGE; 0 for C style, 1 for
  *   Fortran style); an entry below eq_base is a constrained dof and skipped.
  *   n_eq: the number of equations (the length of f, the order of K); an
  *   equation number beyond it is B2B_ERR_RANGE.
@@ -129,8 +153,10 @@
  *   add_tangent_dense:   K(e_r, e_c) += ..., K column-major, ldk >= n_eq
  *   add_tangent_banded:  LAPACK general band storage as dgbsv wants it:
  *                        K(i, j) goes to AB[kl + ku + i - j + ldab*j]
- *                        (0-based), ldab >= 2 kl + ku + 1; an entry outside
- *                        the band is B2B_ERR_RANGE (nothing added)
+ *                        (0-based), ldab >= 2 kl + ku + 1 (computed in 64
+ *                        bits: kl and ku whose band needs more than an int
+ *                        ldab are B2B_ERR_SIZE); an entry outside the band
+ *                        is B2B_ERR_RANGE (nothing added)
  *   tangent_coo:         the nonzero entries (row, col, value) in the same
  *                        numbering (duplicates are to be summed). With
  *                        rows == NULL only *nnz is set (the size query);
@@ -142,13 +168,22 @@
  *     total). revert: back to the last commit (a cut-back), as if the
  *     updates since had never been made. save: the committed state into a
  *     caller-owned byte buffer of b2b_model_save_size bytes; restore: into a
- *     finalized model built with the same beams, groups and parameters
- *     (B2B_ERR_RANGE for a truncated, corrupted or foreign buffer; the model
- *     unchanged). A restored model continues bit for bit as the original.
+ *     finalized model built with the same n_nodes, beams (with their
+ *     self-contact settings) and group pairs with the same parameters as
+ *     at save time (every parameter of every set: a buffer saved before a
+ *     penalty continuation restores into a model with the old set only).
+ *     B2B_ERR_RANGE for a truncated, corrupted, foreign or crafted buffer,
+ *     with the model unchanged: restore checks every field against the
+ *     model (sizes, indices, every double finite and in its range, every
+ *     pair one this model would form, its group pair, its history), not
+ *     only the checksum. A restored model continues bit for bit as the
+ *     original.
  *
  * Stats (b2b_model_stats): counts[B2B_MODEL_COUNTS_LEN] (B2B_COUNT_*) and
  * totals[B2B_MODEL_TOTALS_LEN] (B2B_TOTAL_*) of the last update; unused
- * entries are zero.
+ * entries are zero. Like the contacts they exist only while an update has
+ * results: before the first update, after a revert and after a restore,
+ * b2b_model_stats is B2B_ERR_STATE (never the values of a reverted update).
  *
  * Threads: a model is not shared between host threads without a lock (one
  * model per host thread, each with its own beams, is fine). Inside one model
@@ -165,7 +200,8 @@
  * then unchanged), B2B_ERR_NONFINITE (radius, coordinates, option values),
  * B2B_ERR_SIZE (a beam of too few nodes, ldx < 3, n_cols < n_nodes, ldeq < 3,
  * ldk, ldab, capacity, a replacement parameter set of another history
- * length, a restore size < 0), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a
+ * length, a restore size < 0, more broad-phase pairs than
+ * "max_candidates"), B2B_ERR_NOMEM (memory exhausted, in any thread), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a
  * segment's B2B_ERR_COINCIDENT / B2B_ERR_FOLDED. Messages name the beam,
  * segment, host node or group.
  */

@@ -96,6 +96,11 @@ int report_model_problem(const Reporter& r, const b2b_model* model, const md::Pr
     case W::Equation:
       return r.fail(pb.status, "the equation number of node %d, %c (%g) is beyond n_eq",
                     pb.node + o, kAxis[pb.axis], pb.value);
+    case W::Candidates:
+      return r.fail(pb.status, "the broad phase found more than \"max_candidates\" = %.0f "
+                    "pairs of segments that may touch (nodes on top of each other, or a "
+                    "search margin far too large?); raise the bound with b2b_model_set_int if "
+                    "the scene is meant to be so dense", pb.value);
     case W::Band:
       return r.fail(pb.status, "a contact couples equations %d and %d, outside the band (kl, "
                     "ku): widen the band", pb.row, pb.col);
@@ -124,13 +129,15 @@ int check_setup(const Reporter& r, const b2b_model* model) {
 constexpr Option<b2b_model> kOptions[] = {
     {"search_margin", OptionType::Real,
      Valid::interval(0.0, true, B2B_COORD_MAX, false, "B2B_COORD_MAX"),
-     [](b2b_model& h, double v) { h.m.search_margin = v; }, nullptr},
+     [](b2b_model& h, double v) { h.m.set_search_margin(v); }, nullptr},
     {"threads", OptionType::Int, Valid::at_least(0),
      [](b2b_model& h, double v) { h.m.threads = static_cast<int>(v); }, nullptr},
     {"max_handover_hops", OptionType::Int, Valid::interval(1, false, 1000, false),
      [](b2b_model& h, double v) { h.m.max_hops = static_cast<int>(v); }, nullptr},
     {"message_base", OptionType::Int, Valid::interval(0, false, 1, false),
      [](b2b_model& h, double v) { h.message_base = static_cast<int>(v); }, nullptr},
+    {"max_candidates", OptionType::Int, Valid::at_least(1),
+     [](b2b_model& h, double v) { h.m.set_max_candidates(static_cast<int>(v)); }, nullptr},
 };
 
 int set_by_key(const Reporter& r, b2b_model* model, const char* key, OptionType type,
@@ -418,7 +425,7 @@ int b2b_model_stats(const b2b_model* model, int* counts, double* totals, char* e
                     int errmsg_len) {
   const Reporter r("b2b_model_stats", errmsg, errmsg_len);
   return guarded(r, [&]() -> int {
-    if (int st = check_model_finalized(r, model)) return st;
+    if (int st = check_results(r, model)) return st;  // none after revert or restore
     if (counts) std::memcpy(counts, model->m.counts(), B2B_MODEL_COUNTS_LEN * sizeof(int));
     if (totals) std::memcpy(totals, model->m.totals(), B2B_MODEL_TOTALS_LEN * sizeof(double));
     return B2B_OK;

@@ -1,6 +1,9 @@
 // C entry points that add the model's contact arrays into a host's global
 // residual and tangent (dense, LAPACK band, COO). Argument checks and
 // messages only; src/model/assembly does the work.
+#include <climits>
+#include <cstdint>
+
 #include <b2b/b2b.h>
 
 #include "../model/assembly.hpp"
@@ -27,6 +30,10 @@ int check_assembly(const Reporter& r, const b2b_model* model, const int* eq, int
   if (eq == nullptr) return r.fail(B2B_ERR_NULL, "eq is NULL");
   if (ldeq < 3) return r.fail(B2B_ERR_SIZE, "ldeq is %d (>= 3)", ldeq);
   if (n_eq < 0) return r.fail(B2B_ERR_RANGE, "n_eq is %d (>= 0)", n_eq);
+  if (eq_base == INT_MIN)
+    return r.fail(B2B_ERR_RANGE, "eq_base is %d: no equation number could be below it (a "
+                  "constrained dof); eq_base is > INT_MIN (0 for C, 1 for Fortran numbering)",
+                  eq_base);
   map = md::EqMap{eq, ldeq, eq_base, n_eq};
   const md::Problem pb = md::check_equations(model->m, map, kl, ku);
   if (pb.status) return report_model_problem(r, model, pb);
@@ -70,9 +77,10 @@ int b2b_model_add_tangent_banded(const b2b_model* model, const int* eq, int ldeq
   return guarded(r, [&]() -> int {
     if (AB == nullptr) return r.fail(B2B_ERR_NULL, "AB is NULL");
     if (kl < 0 || ku < 0) return r.fail(B2B_ERR_RANGE, "kl = %d and ku = %d must be >= 0", kl, ku);
-    if (ldab < 2 * kl + ku + 1)
-      return r.fail(B2B_ERR_SIZE, "ldab is %d, dgbsv's band storage needs 2 kl + ku + 1 = %d",
-                    ldab, 2 * kl + ku + 1);
+    const int64_t need = 2 * static_cast<int64_t>(kl) + ku + 1;  // 64 bits: no overflow
+    if (ldab < need)
+      return r.fail(B2B_ERR_SIZE, "ldab is %d, dgbsv's band storage needs 2 kl + ku + 1 = %lld",
+                    ldab, static_cast<long long>(need));
     md::EqMap map;
     if (int st = check_assembly(r, model, eq, ldeq, eq_base, n_eq, true, map, kl, ku)) return st;
     md::add_tangent_banded(model->m, map, kl, ku, AB, ldab);

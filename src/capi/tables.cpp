@@ -8,8 +8,11 @@ namespace capi {
 namespace {
 
 // A bound as the message shows it: an Int option's as an integer.
+// (An unbounded side, kNone, is never converted to an integer.)
 void bound_text(double x, OptionType type, char* out, std::size_t size) {
-  if (type == OptionType::Int)
+  if (!std::isfinite(x))
+    std::snprintf(out, size, "%s", x > 0 ? "inf" : "-inf");
+  else if (type == OptionType::Int)
     std::snprintf(out, size, "%lld", static_cast<long long>(x));
   else
     std::snprintf(out, size, "%g", x);

@@ -10,12 +10,18 @@ namespace {
 
 // The equation (0-based, or -1 if constrained) of each of the 24 dofs of a
 // contact, -1 also for slots without a node.
+// In 64 bits: v - base of any two ints fits (check_equations has made sure
+// that every unconstrained one is below n_eq, so the result fits an int).
 void dof_equations(const Contact& c, const EqMap& map, int e[24]) {
   for (int s = 0; s < 8; ++s)
     for (int i = 0; i < 3; ++i) {
       const int node = c.nodes[s];
-      const int v = node < 0 ? map.base - 1 : map.eq[static_cast<size_t>(map.ldeq) * node + i];
-      e[3 * s + i] = v < map.base ? -1 : v - map.base;
+      if (node < 0) {
+        e[3 * s + i] = -1;
+        continue;
+      }
+      const int64_t v = map.eq[static_cast<size_t>(map.ldeq) * node + i];
+      e[3 * s + i] = v < map.base ? -1 : static_cast<int>(v - map.base);
     }
 }
 
@@ -41,13 +47,13 @@ Problem check_equations(const Model& m, const EqMap& map, int kl, int ku) {
   for (const Contact& c : m.contacts()) {
     for (int s = 0; s < 8; ++s)
       for (int i = 0; i < 3 && c.nodes[s] >= 0; ++i) {
-        const int v = map.eq[static_cast<size_t>(map.ldeq) * c.nodes[s] + i];
+        const int64_t v = map.eq[static_cast<size_t>(map.ldeq) * c.nodes[s] + i];
         if (v >= map.base && v - map.base >= map.n_eq) {
           pb.status = B2B_ERR_RANGE;
           pb.what = Problem::What::Equation;
           pb.node = c.nodes[s];
           pb.axis = i;
-          pb.value = v;
+          pb.value = static_cast<double>(v);
           return pb;
         }
       }
@@ -55,7 +61,8 @@ Problem check_equations(const Model& m, const EqMap& map, int kl, int ku) {
     dof_equations(c, map, e);
     for (int col = 0; col < 24; ++col)
       for (int row = 0; row < 24 && e[col] >= 0; ++row)
-        if (e[row] >= 0 && (e[row] - e[col] > kl || e[col] - e[row] > ku)) {
+        if (e[row] >= 0 && (static_cast<int64_t>(e[row]) - e[col] > kl ||
+                            static_cast<int64_t>(e[col]) - e[row] > ku)) {
           pb.status = B2B_ERR_RANGE;
           pb.what = Problem::What::Band;
           pb.row = e[row] + map.base;
@@ -81,7 +88,8 @@ void add_tangent_dense(const Model& m, const EqMap& map, double* K, int ldk) {
 
 void add_tangent_banded(const Model& m, const EqMap& map, int kl, int ku, double* AB, int ldab) {
   for_each_entry(m, map, [=](int r, int c, double v) {
-    AB[kl + ku + r - c + static_cast<size_t>(ldab) * c] += v;
+    // within the band (checked): 0 <= kl + ku + r - c < ldab, in 64 bits
+    AB[static_cast<int64_t>(kl) + ku + r - c + static_cast<int64_t>(ldab) * c] += v;
   });
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <b2b/b2b.h>
 
@@ -65,7 +66,7 @@ bool BeamTable::share_node(int a, int b) const {
 }
 
 void BeamTable::measure_arcs(const std::vector<Beam>& beams, const double* coords,
-                             const std::vector<int>& used_index) {
+                             const NodeIndex& used_index) {
   arc_lo_.assign(segs_.size(), 0.0);
   arc_hi_.assign(segs_.size(), 0.0);
   arc_total_.assign(beams.size(), 0.0);
@@ -103,14 +104,23 @@ void BeamTable::measure_arcs(const std::vector<Beam>& beams, const double* coord
   }
 }
 
-double BeamTable::arc_gap(const Beam& beam, int a, int b) const {
-  if (arc_lo_[a] > arc_lo_[b]) std::swap(a, b);
-  double gap = std::max(0.0, arc_lo_[b] - arc_hi_[a]);
-  if (beam.closed) {
-    const double total = arc_total_[segs_[a].beam];
-    gap = std::min(gap, std::max(0.0, arc_lo_[a] + total - arc_hi_[b]));
-  }
+double BeamTable::arc_gap(const Beam& beam, int a, int b, const std::vector<double>& lo,
+                          const std::vector<double>& hi, const std::vector<double>& total) const {
+  if (lo[a] > lo[b]) std::swap(a, b);
+  double gap = std::max(0.0, lo[b] - hi[a]);
+  if (beam.closed) gap = std::min(gap, std::max(0.0, lo[a] + total[segs_[a].beam] - hi[b]));
   return gap;
+}
+
+void NodeIndex::build(const std::vector<int>& sorted_used, int n_nodes) {
+  // dense while the table is at most 4 times the used nodes (plus a little)
+  dense_ = static_cast<int64_t>(n_nodes) <= 4 * static_cast<int64_t>(sorted_used.size()) + 4096;
+  if (!dense_) {
+    table_ = sorted_used;
+    return;
+  }
+  table_.assign(static_cast<size_t>(n_nodes), -1);
+  for (size_t k = 0; k < sorted_used.size(); ++k) table_[sorted_used[k]] = static_cast<int>(k);
 }
 
 void BeamTable::set_arcs(std::vector<double> lo, std::vector<double> hi,

@@ -5,10 +5,30 @@
 // self-contact).
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 namespace b2b {
 namespace model {
+
+// Host node number -> index among the nodes of beams (-1: no beam's node).
+// A table of n_nodes entries when that is not much more than the used nodes
+// (the fast case of every real mesh), else a binary search in the sorted
+// used nodes: a host's n_nodes alone never costs memory (finalize(INT_MAX)
+// with one small beam holds a few ints).
+class NodeIndex {
+ public:
+  void build(const std::vector<int>& sorted_used, int n_nodes);
+  int operator[](int node) const {
+    if (dense_) return table_[node];
+    auto it = std::lower_bound(table_.begin(), table_.end(), node);
+    return it != table_.end() && *it == node ? static_cast<int>(it - table_.begin()) : -1;
+  }
+
+ private:
+  bool dense_ = true;
+  std::vector<int> table_;  // dense: per host node; else: the sorted used nodes
+};
 
 struct Beam {
   std::vector<int> nodes;  // host node numbers, 0-based
@@ -47,10 +67,15 @@ class BeamTable {
   // Self-contact: the arc spans of the segments of beam b along its chords,
   // from coordinates x of the host nodes (node k at x[3*used(k)]).
   void measure_arcs(const std::vector<Beam>& beams, const double* coords,
-                    const std::vector<int>& used_index);
+                    const NodeIndex& used_index);
   bool arcs_measured() const { return !arc_lo_.empty(); }
   // Arc length between two segments of one beam (0 if they overlap).
-  double arc_gap(const Beam& beam, int a, int b) const;
+  double arc_gap(const Beam& beam, int a, int b) const {
+    return arc_gap(beam, a, b, arc_lo_, arc_hi_, arc_total_);
+  }
+  // The same with given arc spans (a restart buffer's, before it is accepted).
+  double arc_gap(const Beam& beam, int a, int b, const std::vector<double>& lo,
+                 const std::vector<double>& hi, const std::vector<double>& total) const;
   // The per-segment arc spans, for a restart file (and set_arcs to restore them).
   const std::vector<double>& arc_lo() const { return arc_lo_; }
   const std::vector<double>& arc_hi() const { return arc_hi_; }

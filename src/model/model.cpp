@@ -19,27 +19,40 @@ int Model::add_beam(Beam beam) {
 
 void Model::set_group_pair(int ga, int gb, const pair::Params& p) {
   if (ga > gb) std::swap(ga, gb);
-  for (GroupPair& g : group_pairs_)
-    if (g.ga == ga && g.gb == gb) {
-      g.params = p;
-      g.hist_len = pair::history_length(p);
-      if (finalized_) {
-        g0_max_ = 0.0;
-        for (const GroupPair& h : group_pairs_)
-          g0_max_ = std::max(g0_max_, pair::contact_start_gap(h.params));
-        candidates_.clear();  // boxes depend on g0: search again
-        build_coords_.clear();
-      }
-      return;
+  auto found = gp_by_host_.find({ga, gb});
+  if (found != gp_by_host_.end()) {
+    GroupPair& g = group_pairs_[found->second];
+    g.params = p;
+    g.hist_len = pair::history_length(p);
+    if (finalized_) {
+      g0_max_ = 0.0;
+      for (const GroupPair& h : group_pairs_)
+        g0_max_ = std::max(g0_max_, pair::contact_start_gap(h.params));
+      invalidate_search();  // boxes depend on g0: search again
     }
+    return;
+  }
+  // both insertions or neither: room first (growing geometrically)
+  if (group_pairs_.size() == group_pairs_.capacity())
+    group_pairs_.reserve(2 * group_pairs_.size() + 1);
+  gp_by_host_.emplace(std::make_pair(ga, gb), static_cast<int>(group_pairs_.size()));
   group_pairs_.push_back(GroupPair{ga, gb, p, pair::history_length(p)});
 }
 
 const GroupPair* Model::group_pair(int ga, int gb) const {
   if (ga > gb) std::swap(ga, gb);
-  for (const GroupPair& g : group_pairs_)
-    if (g.ga == ga && g.gb == gb) return &g;
-  return nullptr;
+  auto found = gp_by_host_.find({ga, gb});
+  return found == gp_by_host_.end() ? nullptr : &group_pairs_[found->second];
+}
+
+void Model::set_search_margin(double s) {
+  search_margin = s;
+  if (finalized_) invalidate_search();  // the skin and the grown boxes change
+}
+
+void Model::set_max_candidates(int n) {
+  max_candidates = n;
+  if (finalized_) invalidate_search();  // the bound applies from the next search on
 }
 
 Problem Model::finalize(int n_nodes) {
@@ -51,7 +64,6 @@ Problem Model::finalize(int n_nodes) {
   }
   for (size_t b = 0; b < beams_.size(); ++b) {
     const Beam& beam = beams_[b];
-    std::vector<int> sorted = beam.nodes;
     for (size_t k = 0; k < beam.nodes.size(); ++k)
       if (beam.nodes[k] < 0 || beam.nodes[k] >= n_nodes) {
         pb.status = B2B_ERR_RANGE;
@@ -69,36 +81,55 @@ Problem Model::finalize(int n_nodes) {
       return pb;
     }
   }
-  n_nodes_ = n_nodes;
-  // Dense group numbers and the table of which group pairs touch.
+  // Everything is built in locals first: an allocation failure leaves the
+  // model unfinalized and as it was.
+  // Dense group numbers and the group pairs between groups that have beams,
+  // in proportion to the beams and the pairs set (never groups squared).
   std::vector<int> groups;
+  groups.reserve(beams_.size());
   for (const Beam& b : beams_) groups.push_back(b.group);
   std::sort(groups.begin(), groups.end());
   groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
-  n_groups_ = static_cast<int>(groups.size());
-  dense_group_.clear();
+  std::vector<int> dense_group;
+  dense_group.reserve(beams_.size());
   for (const Beam& b : beams_)
-    dense_group_.push_back(static_cast<int>(
+    dense_group.push_back(static_cast<int>(
         std::lower_bound(groups.begin(), groups.end(), b.group) - groups.begin()));
-  gp_of_groups_.assign(static_cast<size_t>(n_groups_) * n_groups_, -1);
-  for (int i = 0; i < n_groups_; ++i)
-    for (int j = 0; j < n_groups_; ++j) {
-      const GroupPair* g = group_pair(groups[i], groups[j]);
-      if (g) gp_of_groups_[i * n_groups_ + j] = static_cast<int>(g - group_pairs_.data());
-    }
-  g0_max_ = 0.0;
-  for (const GroupPair& g : group_pairs_)
-    g0_max_ = std::max(g0_max_, pair::contact_start_gap(g.params));
-  table_.build(beams_, dense_group_);
-  used_index_.assign(n_nodes, -1);
-  used_nodes_.clear();
-  for (const Beam& b : beams_)
-    for (int node : b.nodes) used_index_[node] = 0;
-  for (int k = 0; k < n_nodes; ++k)
-    if (used_index_[k] == 0) {
-      used_index_[k] = static_cast<int>(used_nodes_.size());
-      used_nodes_.push_back(k);
-    }
+  auto dense = [&groups](int g) {
+    auto it = std::lower_bound(groups.begin(), groups.end(), g);
+    return it != groups.end() && *it == g ? static_cast<int>(it - groups.begin()) : -1;
+  };
+  std::vector<std::pair<uint64_t, int>> gp_of_groups;
+  for (size_t k = 0; k < group_pairs_.size(); ++k) {
+    const int da = dense(group_pairs_[k].ga), db = dense(group_pairs_[k].gb);
+    if (da < 0 || db < 0) continue;  // a group without beams
+    gp_of_groups.emplace_back(dense_key(da, db), static_cast<int>(k));
+    if (da != db) gp_of_groups.emplace_back(dense_key(db, da), static_cast<int>(k));
+  }
+  std::sort(gp_of_groups.begin(), gp_of_groups.end());
+  // The host nodes of beams, sorted, and their index (n_nodes itself costs
+  // nothing: NodeIndex).
+  std::vector<int> used;
+  for (const Beam& b : beams_) used.insert(used.end(), b.nodes.begin(), b.nodes.end());
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  NodeIndex used_index;
+  used_index.build(used, n_nodes);
+  BeamTable table;
+  std::vector<Beam> beams = beams_;
+  table.build(beams, dense_group);
+
+  double g0 = 0.0;
+  for (const GroupPair& g : group_pairs_) g0 = std::max(g0, pair::contact_start_gap(g.params));
+  n_nodes_ = n_nodes;
+  n_groups_ = static_cast<int>(groups.size());
+  dense_group_.swap(dense_group);
+  gp_of_groups_.swap(gp_of_groups);
+  used_nodes_.swap(used);
+  used_index_ = std::move(used_index);
+  beams_.swap(beams);
+  table_ = std::move(table);
+  g0_max_ = g0;
   finalized_ = true;
   return pb;
 }
@@ -122,18 +153,40 @@ bool Model::may_pair(int a, int b) const {
   return table_.arc_gap(beam, a, b) > exclusion;
 }
 
+bool Model::may_pair_with_arcs(int a, int b, const std::vector<double>& lo,
+                               const std::vector<double>& hi,
+                               const std::vector<double>& total) const {
+  if (group_pair_index(a, b) < 0) return false;
+  if (table_.share_node(a, b)) return false;
+  const SegmentInfo &sa = table_.segment(a), &sb = table_.segment(b);
+  if (sa.beam != sb.beam) return true;
+  const Beam& beam = beams_[sa.beam];
+  if (!beam.self_contact || lo.empty()) return false;
+  const double exclusion = beam.exclusion >= 0.0 ? beam.exclusion : 4.0 * beam.radius;
+  return table_.arc_gap(beam, a, b, lo, hi, total) > exclusion;
+}
+
 void Model::commit() {
-  committed_ = trial_;
-  committed_coords_ = current_coords_;
+  ContactState committed = trial_;  // copies first: a failed one changes nothing
+  std::vector<double> coords = current_coords_;
+  committed_ = std::move(committed);
+  committed_coords_ = std::move(coords);
+  if (table_.arcs_measured()) arcs_committed_ = true;
   updated_ = false;
 }
 
 void Model::revert() {
+  // Arc lengths measured by a reverted update (the first after finalize, or
+  // after a revert that forgot them) are forgotten with it: they are
+  // measured in the configuration of the first update that is committed.
+  if (!arcs_committed_) table_.set_arcs({}, {}, {});
   trial_ = ContactState();
   updated_ = false;
   has_results_ = false;
   contacts_.clear();
   tangents_.clear();
+  std::fill(counts_, counts_ + 16, 0);
+  std::fill(totals_, totals_ + 8, 0.0);
 }
 
 }  // namespace model

@@ -6,6 +6,7 @@
 // buffer) it reports as a Problem for the C boundary to word.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <utility>
@@ -26,12 +27,20 @@ struct GroupPair {
   int hist_len;
 };
 
+// Thrown by the broad phase when it finds more than "max_candidates" pairs
+// (caught by Model::update, which reports it as a Problem).
+struct CandidateLimit {};
+
+// Default of the "max_candidates" option: pairs kept by one search (about
+// 1.2 GB of candidate lists at the bound).
+constexpr int kDefaultMaxCandidates = 100000000;
+
 // What went wrong, for the C boundary to word (status 0: nothing).
 struct Problem {
   int status = 0;
   enum class What {
     None, NodeRange, SelfNoGroupPair, NoGroupPair, Coordinate, Segment,
-    Overflow, Buffer, Equation, Band
+    Overflow, Buffer, Equation, Band, Candidates
   } what = What::None;
   int beam = -1, segment = -1, node = -1, slot_a = -1, slot_b = -1, axis = -1;
   int other_beam = -1, other_segment = -1;
@@ -59,9 +68,16 @@ class Model {
   // Sets or replaces (same history length, checked by the caller) a pair.
   void set_group_pair(int ga, int gb, const pair::Params& p);
   const GroupPair* group_pair(int ga, int gb) const;
+  // Options (b2b_model.h says, per option, what a change after finalize
+  // does): the search margin and the candidate bound invalidate the
+  // candidates, so the next update searches again; the others are read
+  // afresh by every update and leave nothing derived behind.
+  void set_search_margin(double s);
+  void set_max_candidates(int n);
   double search_margin = -1.0;  // < 0: the default (largest radius)
   int threads = 0;
   int max_hops = 16;
+  int max_candidates = kDefaultMaxCandidates;
 
   Problem finalize(int n_nodes);
   bool finalized() const { return finalized_; }
@@ -98,10 +114,15 @@ class Model {
   // finalize
   BeamTable table_;
   std::vector<int> used_nodes_;   // host nodes of beams, sorted
-  std::vector<int> used_index_;   // host node -> index in used_nodes_ (-1: unused)
+  NodeIndex used_index_;          // host node -> index in used_nodes_ (-1: unused)
   std::vector<int> dense_group_;  // per beam
   int n_groups_ = 0;
-  std::vector<int> gp_of_groups_;  // n_groups^2: group pair index or -1
+  // host (ga, gb), ga <= gb -> index into group_pairs_: one entry per pair set
+  std::map<std::pair<int, int>, int> gp_by_host_;
+  // (dense ga, dense gb), both orders, sorted -> index into group_pairs_:
+  // one or two entries per pair set whose groups have beams (so 10^6 groups
+  // cost their beams, not their square)
+  std::vector<std::pair<uint64_t, int>> gp_of_groups_;
   double margin_ = 0.0, g0_max_ = 0.0;
   // broad phase
   std::vector<Box> search_boxes_;
@@ -114,6 +135,10 @@ class Model {
   std::vector<double> committed_coords_;  // used nodes at the last commit (empty: none yet)
   std::vector<double> current_coords_;    // of the last update
   bool updated_ = false, has_results_ = false, want_tangent_ = false;
+  // The self-contact arc lengths (table_) belong to the committed state once
+  // a commit (or a restore) has followed the update that measured them; a
+  // revert before that forgets them, so the next update measures again.
+  bool arcs_committed_ = false;
   std::vector<Contact> contacts_;
   std::vector<double> tangents_;
   int counts_[16] = {0};
@@ -121,10 +146,24 @@ class Model {
 
   friend class Updater;
   friend struct RestartCodec;
+  // The group pair of two segments' groups (index into group_pairs_), or -1.
   int group_pair_index(int seg_a, int seg_b) const {
-    return gp_of_groups_[table_.segment(seg_a).group * n_groups_ + table_.segment(seg_b).group];
+    const uint64_t key = dense_key(table_.segment(seg_a).group, table_.segment(seg_b).group);
+    auto it = std::lower_bound(gp_of_groups_.begin(), gp_of_groups_.end(),
+                               std::pair<uint64_t, int>(key, -1));
+    return it != gp_of_groups_.end() && it->first == key ? it->second : -1;
+  }
+  static uint64_t dense_key(int ga, int gb) {
+    return static_cast<uint64_t>(static_cast<uint32_t>(ga)) << 32 | static_cast<uint32_t>(gb);
+  }
+  void invalidate_search() {
+    candidates_.clear();
+    build_coords_.clear();
   }
   bool may_pair(int a, int b) const;
+  // may_pair with the self-contact arc spans of a restart buffer.
+  bool may_pair_with_arcs(int a, int b, const std::vector<double>& lo,
+                          const std::vector<double>& hi, const std::vector<double>& total) const;
   double effective_margin() const;
   uint64_t fingerprint() const;
 };

@@ -2,13 +2,25 @@
 //
 // Layout (native byte order and doubles; a restart file is for the same
 // platform): "B2BMODL1", total size, format version, model fingerprint (a
-// hash of the beams, groups, self-contact settings and history lengths, so a
-// buffer is only accepted by a model built the same way), the committed
-// coordinates of the beams' nodes, the self-contact arc spans, the total
-// dissipation, the committed pairs with their histories, and an FNV-1a
-// checksum of everything before it. Everything else a model holds is either
+// hash of n_nodes, the beams with their self-contact settings, and every
+// group pair with every parameter of its set, so a buffer is only accepted
+// by a model built the same way), the committed coordinates of the beams'
+// nodes, the self-contact arc spans (once committed), the total dissipation,
+// the committed pairs with their histories, and an FNV-1a checksum of
+// everything before it.
+//
+// The checksum only tells damage from chance; a buffer may have been
+// crafted, so restore also checks every field against the model: sizes,
+// every double finite and in its range (coordinates within B2B_COORD_MAX,
+// arc spans ordered along each beam within its length, dissipation >= 0),
+// and every pair one this model could have formed (segments in range,
+// distinct, of groups that are paired, sharing no node, beyond the
+// self-contact exclusion on one beam) with its own group pair, history
+// length and a history the element could have written. Anything else is
+// B2B_ERR_RANGE with the model unchanged. Everything else a model holds is either
 // set up by the host again or recomputed at the next update (the search);
 // neither changes the results, so a restored model continues bit for bit.
+#include <cmath>
 #include <cstring>
 
 #include <b2b/b2b.h>
@@ -21,7 +33,9 @@ namespace model {
 namespace {
 
 constexpr char kMagic[8] = {'B', '2', 'B', 'M', 'O', 'D', 'L', '1'};
-constexpr uint64_t kVersion = 1;
+// 2: the fingerprint covers the group pairs' parameters (a version 1
+// buffer would be refused as foreign; this says why).
+constexpr uint64_t kVersion = 2;
 
 uint64_t fnv1a(const unsigned char* p, size_t n, uint64_t h = 1469598103934665603ULL) {
   for (size_t i = 0; i < n; ++i) {
@@ -68,6 +82,7 @@ class Reader {
     v.resize(n);
     return n == 0 || bytes(v.data(), 8 * n);
   }
+  size_t left() const { return n_ - pos_; }
 
  private:
   const unsigned char* p_;
@@ -83,9 +98,11 @@ struct RestartCodec {
     w.u64(kVersion);
     w.u64(m.fingerprint());
     w.doubles(m.committed_coords_);
-    w.doubles(m.table_.arc_lo());
-    w.doubles(m.table_.arc_hi());
-    w.doubles(m.table_.arc_total());
+    // arc spans of an update not yet committed are not part of the state
+    static const std::vector<double> kNone;
+    w.doubles(m.arcs_committed_ ? m.table_.arc_lo() : kNone);
+    w.doubles(m.arcs_committed_ ? m.table_.arc_hi() : kNone);
+    w.doubles(m.arcs_committed_ ? m.table_.arc_total() : kNone);
     w.f64(m.committed_.dissipation);
     w.u64(m.committed_.pairs.size());
     for (const StoredPair& p : m.committed_.pairs) {
@@ -107,6 +124,27 @@ struct RestartCodec {
     return pb;
   }
 
+  // Per beam: a length >= 0 and, segment by segment, spans lo <= hi within
+  // [-length, length] (a ring's first centred span starts before 0), both
+  // non-decreasing along the beam; all finite.
+  static bool arcs_valid(const Model& m, const std::vector<double>& lo,
+                         const std::vector<double>& hi, const std::vector<double>& total) {
+    if (lo.empty()) return true;
+    for (size_t b = 0; b < m.beams_.size(); ++b) {
+      const Beam& beam = m.beams_[b];
+      const double t = total[b];
+      if (!std::isfinite(t) || !(t >= 0.0)) return false;
+      for (int s = 0; s < beam.n_segments; ++s) {
+        const size_t g = static_cast<size_t>(beam.first_segment + s);
+        if (!std::isfinite(lo[g]) || !std::isfinite(hi[g]) || !(lo[g] <= hi[g]) ||
+            !(lo[g] >= -t) || !(hi[g] <= t))
+          return false;
+        if (s > 0 && (!(lo[g] >= lo[g - 1]) || !(hi[g] >= hi[g - 1]))) return false;
+      }
+    }
+    return true;
+  }
+
   static Problem read(Model& m, const unsigned char* buf, int64_t size) {
     if (size < 40) return fail("it is truncated (shorter than the header)");
     if (std::memcmp(buf, kMagic, 8) != 0) return fail("it is not a b2b model restart buffer");
@@ -121,7 +159,8 @@ struct RestartCodec {
     std::memcpy(&sum, buf + total - 8, 8);
     if (fnv1a(buf, total - 8) != sum) return fail("it is corrupted (checksum)");
     if (fingerprint != m.fingerprint())
-      return fail("it is from another model (other beams, groups or history lengths)");
+      return fail("it is from another model (other nodes, beams, self-contact settings, group "
+                  "pairs or parameters)");
 
     Reader r(buf + 32, total - 40);
     const uint64_t n_seg = static_cast<uint64_t>(m.table_.segment_count());
@@ -134,39 +173,64 @@ struct RestartCodec {
       return fail("it is corrupted (inconsistent sizes)");
     if (!coords.empty() && coords.size() != 3 * m.used_nodes_.size())
       return fail("it is corrupted (coordinates)");
+    for (double v : coords)
+      if (!std::isfinite(v) || std::fabs(v) > B2B_COORD_MAX)
+        return fail("it holds a committed coordinate that is not finite or beyond B2B_COORD_MAX");
     if (!(lo.size() == hi.size() && (lo.empty() ? arc_total.empty()
                                                 : lo.size() == n_seg &&
                                                       arc_total.size() == m.beams_.size())))
       return fail("it is corrupted (arc lengths)");
+    bool self = false;
+    for (const Beam& b : m.beams_) self = self || b.self_contact;
+    // Arc spans are measured by the first update when a beam has
+    // self-contact, and saved once committed: with the coordinates.
+    if (lo.empty() != (!self || coords.empty()))
+      return fail(self ? "it is corrupted (committed coordinates without arc lengths, or the "
+                         "reverse)"
+                       : "it holds arc lengths but no beam of this model has self-contact");
+    if (!arcs_valid(m, lo, hi, arc_total))
+      return fail("it holds self-contact arc lengths that are not finite, negative or out of "
+                  "order along their beam");
+    if (!std::isfinite(st.dissipation) || !(st.dissipation >= 0.0))
+      return fail("it holds a total dissipation that is negative or not finite");
     if (coords.empty() && n_pairs > 0) return fail("it is corrupted (pairs without coordinates)");
+    if (n_pairs > r.left() / 48) return fail("it is corrupted (pair count)");
     uint64_t last_key = 0;
     for (uint64_t k = 0; k < n_pairs; ++k) {
       uint64_t key, a, b, status, gp, len;
       if (!r.u64(key) || !r.u64(a) || !r.u64(b) || !r.u64(status) || !r.u64(gp) || !r.u64(len))
         return fail("it is corrupted (pair list)");
-      if (a >= n_seg || b >= n_seg || key != pair_key(static_cast<int>(a), static_cast<int>(b)) ||
+      if (a >= n_seg || b >= n_seg || a == b ||
+          key != pair_key(static_cast<int>(a), static_cast<int>(b)) ||
           (k > 0 && key <= last_key))
         return fail("it is corrupted (pair keys)");
       last_key = key;
       if (status != B2B_CONTACT_ACTIVE && status != B2B_CONTACT_OPEN)
         return fail("it is corrupted (pair status)");
-      if (static_cast<int64_t>(gp) != m.group_pair_index(static_cast<int>(a), static_cast<int>(b)))
-        return fail("it is corrupted (group pair)");
-      const GroupPair& g = m.group_pairs_[gp];
+      const int ia = static_cast<int>(a), ib = static_cast<int>(b);
+      if (!m.may_pair_with_arcs(ia, ib, lo, hi, arc_total))
+        return fail("it holds a pair of segments this model never pairs (the same segment, "
+                    "segments sharing a node, groups not paired, or within the self-contact "
+                    "exclusion)");
+      const int index = m.group_pair_index(ia, ib);  // >= 0: may_pair
+      if (gp != static_cast<uint64_t>(index)) return fail("it is corrupted (group pair)");
+      const GroupPair& g = m.group_pairs_[static_cast<size_t>(index)];
       if (len != static_cast<uint64_t>(g.hist_len)) return fail("it is corrupted (history length)");
       const size_t offset = st.hist.size();
+      if (len > r.left() / 8) return fail("it is corrupted (histories)");
       st.hist.resize(offset + len);
       if (!r.bytes(st.hist.data() + offset, 8 * len)) return fail("it is corrupted (histories)");
       if (pair::check_history(g.params, st.hist.data() + offset, static_cast<int>(len)).problem !=
           pair::HistoryProblem::None)
         return fail("it holds a pair history b2b could not have written");
-      st.pairs.push_back(StoredPair{key, static_cast<int>(a), static_cast<int>(b),
-                                    static_cast<int>(status), static_cast<int>(gp), offset,
+      st.pairs.push_back(StoredPair{key, ia, ib, static_cast<int>(status), index, offset,
                                     static_cast<int>(len)});
     }
+    if (r.left() != 0) return fail("it is corrupted (bytes after the pair list)");
     // Accepted: replace the committed state; the rest starts afresh.
     m.committed_ = std::move(st);
     m.committed_coords_ = std::move(coords);
+    m.arcs_committed_ = !lo.empty();
     m.table_.set_arcs(std::move(lo), std::move(hi), std::move(arc_total));
     m.trial_ = ContactState();
     m.updated_ = false;
@@ -180,7 +244,9 @@ struct RestartCodec {
 uint64_t Model::fingerprint() const {
   uint64_t h = 1469598103934665603ULL;
   auto mix = [&h](const void* p, size_t n) { h = fnv1a(static_cast<const unsigned char*>(p), n, h); };
-  mix(&n_nodes_, sizeof n_nodes_);
+  auto mix_int = [&mix](int v) { mix(&v, sizeof v); };
+  auto mix_double = [&mix](double v) { mix(&v, sizeof v); };
+  mix_int(n_nodes_);
   for (const Beam& b : beams_) {
     const size_t n = b.nodes.size();
     mix(&n, sizeof n);
@@ -190,9 +256,18 @@ uint64_t Model::fingerprint() const {
     mix(&b.radius, sizeof b.radius);
     mix(&b.exclusion, sizeof b.exclusion);
   }
-  for (const GroupPair& g : group_pairs_) {
-    const int v[3] = {g.ga, g.gb, g.hist_len};
-    mix(v, sizeof v);
+  // Every group pair with every parameter of its set (field by field: no
+  // padding bytes), in the order of the host's group numbers.
+  for (const auto& entry : gp_by_host_) {
+    const GroupPair& g = group_pairs_[entry.second];
+    const pair::Params& p = g.params;
+    for (int v : {g.ga, g.gb, g.hist_len, p.law, p.warm_start, p.max_iterations, p.tangent,
+                  int(p.penalty_set), int(p.regularization_gap_set),
+                  int(p.tangential_penalty_set)})
+      mix_int(v);
+    for (double v : {p.penalty, p.regularization_gap, p.parallel_angle_deg, p.friction,
+                     p.tangential_penalty})
+      mix_double(v);
   }
   return h;
 }

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 
 #ifdef B2B_HAVE_OPENMP
 #include <omp.h>
@@ -20,23 +22,37 @@ void BoxTree::overlapping_pairs(Accept accept, int threads,
   constexpr int kChunk = 4096;
   const int n_chunks = (n + kChunk - 1) / kChunk;
   if (static_cast<int>(chunks_.size()) < n_chunks) chunks_.resize(n_chunks);
+  // No exception may leave a parallel region (std::terminate): a chunk that
+  // throws (std::bad_alloc, or accept's own) keeps its exception, the others
+  // stop early, and the exception of the first such chunk is rethrown here.
+  std::vector<std::exception_ptr> thrown(static_cast<size_t>(n_chunks));
+  std::atomic<bool> stop{false};
 #ifdef B2B_HAVE_OPENMP
   const int nt = threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nt) if (n_chunks > 1)
 #endif
   for (int c = 0; c < n_chunks; ++c) {
-    Accept local = accept;
-    Chunk& chunk = chunks_[c];
-    chunk.count.clear();
-    chunk.partners.clear();
-    const int end = std::min(n, (c + 1) * kChunk);
-    for (int i = c * kChunk; i < end; ++i) {
-      const size_t start = chunk.partners.size();
-      partners(i, local, chunk.partners);
-      std::sort(chunk.partners.begin() + static_cast<std::ptrdiff_t>(start), chunk.partners.end());
-      chunk.count.push_back(static_cast<int>(chunk.partners.size() - start));
+    if (stop.load(std::memory_order_relaxed)) continue;
+    try {
+      Accept local = accept;
+      Chunk& chunk = chunks_[c];
+      chunk.count.clear();
+      chunk.partners.clear();
+      const int end = std::min(n, (c + 1) * kChunk);
+      for (int i = c * kChunk; i < end && !stop.load(std::memory_order_relaxed); ++i) {
+        const size_t start = chunk.partners.size();
+        partners(i, local, chunk.partners);
+        std::sort(chunk.partners.begin() + static_cast<std::ptrdiff_t>(start),
+                  chunk.partners.end());
+        chunk.count.push_back(static_cast<int>(chunk.partners.size() - start));
+      }
+    } catch (...) {
+      thrown[c] = std::current_exception();
+      stop = true;
     }
   }
+  for (const std::exception_ptr& e : thrown)
+    if (e) std::rethrow_exception(e);
   gather(n_chunks, kChunk, threads, out);
 }
 

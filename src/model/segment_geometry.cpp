@@ -11,7 +11,7 @@
 namespace b2b {
 namespace model {
 
-void gather_patch(const SegmentInfo& s, const double* coords, const std::vector<int>& used_index,
+void gather_patch(const SegmentInfo& s, const double* coords, const NodeIndex& used_index,
                   double X[12]) {
   for (int k = 0; k < 4; ++k) {
     const int node = s.nodes[k];
@@ -20,7 +20,7 @@ void gather_patch(const SegmentInfo& s, const double* coords, const std::vector<
 }
 
 curve::Failure build_segment(const SegmentInfo& s, const double* coords,
-                             const std::vector<int>& used_index, curve::Segment& seg,
+                             const NodeIndex& used_index, curve::Segment& seg,
                              bool derivatives) {
   double X[12];
   gather_patch(s, coords, used_index, X);
@@ -28,7 +28,7 @@ curve::Failure build_segment(const SegmentInfo& s, const double* coords,
   return seg.build(s.kind, s.start_rule, s.end_rule, X, kNoTangents, derivatives);
 }
 
-Box segment_box(const SegmentInfo& s, const double* coords, const std::vector<int>& used_index) {
+Box segment_box(const SegmentInfo& s, const double* coords, const NodeIndex& used_index) {
   Box box;
   for (int i = 0; i < 3; ++i) {
     box.lo[i] = HUGE_VAL;
@@ -71,7 +71,7 @@ Box segment_box(const SegmentInfo& s, const double* coords, const std::vector<in
 }
 
 bool handover_committed(const BeamTable& table, int from, int to, int side, int direction,
-                        const std::vector<double>& coords, const std::vector<int>& used_index,
+                        const std::vector<double>& coords, const NodeIndex& used_index,
                         double* hist, int len) {
   curve::Segment seg[2];
   const int ids[2] = {from, to};

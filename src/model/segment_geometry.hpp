@@ -13,11 +13,11 @@ namespace b2b {
 namespace model {
 
 // The 12 patch coordinates (slots without a node: 0, never read).
-void gather_patch(const SegmentInfo& s, const double* coords, const std::vector<int>& used_index,
+void gather_patch(const SegmentInfo& s, const double* coords, const NodeIndex& used_index,
                   double X[12]);
 
 curve::Failure build_segment(const SegmentInfo& s, const double* coords,
-                             const std::vector<int>& used_index, curve::Segment& seg,
+                             const NodeIndex& used_index, curve::Segment& seg,
                              bool derivatives);
 
 // A box containing the segment's curve, from its Hermite control polygon
@@ -30,7 +30,7 @@ curve::Failure build_segment(const SegmentInfo& s, const double* coords,
 // (the l23/3 term by 2d/3): a box grown at a search by r + g0/2 + 4s/3 still
 // holds the current box grown by r + g0/2 + s/2 while no node has moved more
 // than s/2, which is what the near test (reach r_A + r_B + g0 + s) needs.
-Box segment_box(const SegmentInfo& s, const double* coords, const std::vector<int>& used_index);
+Box segment_box(const SegmentInfo& s, const double* coords, const NodeIndex& used_index);
 
 // Maps a committed history across the joint from segment `from` to its
 // neighbour `to` (direction +1 or -1) of beam side 0 (A) or 1 (B), with both
@@ -38,7 +38,7 @@ Box segment_box(const SegmentInfo& s, const double* coords, const std::vector<in
 // anchors live). False when a segment cannot be built there or the two do not
 // share the joint.
 bool handover_committed(const BeamTable& table, int from, int to, int side, int direction,
-                        const std::vector<double>& coords, const std::vector<int>& used_index,
+                        const std::vector<double>& coords, const NodeIndex& used_index,
                         double* hist, int len);
 
 }  // namespace model

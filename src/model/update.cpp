@@ -10,9 +10,11 @@
 //   7. the active set, sorted by pair, and the trial histories
 // Nothing of the model changes unless all of it succeeds.
 #include <algorithm>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <exception>
 
 #include <b2b/b2b.h>
 
@@ -115,15 +117,28 @@ Problem Model::update(const double* x, int ldx, bool want_tangent) {
 
 Problem Updater::run() {
   const bool had_arcs = m_.table_.arcs_measured();
-  Problem pb = gather();
-  if (!pb.status) {
-    broad_phase();
-    near_pairs();
-    pb = build_segments();
+  Problem pb;
+  // An exception (std::bad_alloc, from this thread or carried out of a
+  // parallel region) leaves the model as it was, like a Problem: the
+  // firewall turns it into B2B_ERR_NOMEM.
+  try {
+    pb = gather();
+    if (!pb.status) {
+      broad_phase();
+      near_pairs();
+      pb = build_segments();
+    }
+    if (!pb.status) pb = evaluate_all();
+    if (!pb.status) pb = handovers();
+    if (!pb.status) pb = totals_overflow();
+  } catch (const CandidateLimit&) {
+    pb.status = B2B_ERR_SIZE;
+    pb.what = Problem::What::Candidates;
+    pb.value = m_.max_candidates;
+  } catch (...) {
+    if (!had_arcs && m_.table_.arcs_measured()) m_.table_.set_arcs({}, {}, {});
+    throw;
   }
-  if (!pb.status) pb = evaluate_all();
-  if (!pb.status) pb = handovers();
-  if (!pb.status) pb = totals_overflow();
   if (pb.status) {
     if (!had_arcs && m_.table_.arcs_measured()) m_.table_.set_arcs({}, {}, {});
     return pb;
@@ -188,8 +203,17 @@ void Updater::broad_phase() {
   }
   m_.tree_.build(grown);
   const Model& m = m_;
-  m_.tree_.overlapping_pairs([&m](int a, int b) { return m.may_pair(a, b); }, m_.threads,
-                             new_candidates_);
+  // At most "max_candidates" pairs: one over stops the search (the count is
+  // the same whatever the threads, so is the outcome).
+  std::atomic<int64_t> accepted{0};
+  const int64_t limit = m_.max_candidates;
+  m_.tree_.overlapping_pairs(
+      [&m, &accepted, limit](int a, int b) {
+        if (!m.may_pair(a, b)) return false;
+        if (accepted.fetch_add(1, std::memory_order_relaxed) >= limit) throw CandidateLimit();
+        return true;
+      },
+      m_.threads, new_candidates_);
 }
 
 void Updater::near_pairs() {
@@ -283,12 +307,20 @@ Problem Updater::build_segments() {
   std::vector<curve::Failure> fail(nn);
   const SegmentInfo* info = &m_.table_.segment(0);
   const double* cur = cur_.data();
-  const std::vector<int>& used = m_.used_index_;
+  const NodeIndex& used = m_.used_index_;
   curve::Segment* built = built_.data();
+  std::atomic<bool> thrown{false};  // no exception may leave a parallel region
 #ifdef B2B_HAVE_OPENMP
 #pragma omp parallel for schedule(static) num_threads(nt()) if (nn >= kParallelSegments)
 #endif
-  for (int k = 0; k < nn; ++k) fail[k] = build_segment(info[need[k]], cur, used, built[k], true);
+  for (int k = 0; k < nn; ++k) {
+    try {
+      fail[k] = build_segment(info[need[k]], cur, used, built[k], true);
+    } catch (...) {
+      thrown = true;
+    }
+  }
+  if (thrown) throw std::bad_alloc();
   for (int k = 0; k < nn; ++k)
     if (fail[k].status) {
       Problem pb;
@@ -373,20 +405,27 @@ Problem Updater::evaluate_all() {
   // order below, so the layout does not depend on the threads.
   std::vector<std::vector<double>> parts(want_tangent_ ? n_chunks : 0);
   Item* items = items_.data();
+  std::atomic<bool> thrown{false};  // no exception may leave a parallel region
 #ifdef B2B_HAVE_OPENMP
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nt()) if (n >= kParallelPairs)
 #endif
   for (int c = 0; c < n_chunks; ++c) {
-    double K[pair::kNdof * pair::kNdof];
-    const int end = std::min(n, (c + 1) * kChunk);
-    for (int k = c * kChunk; k < end; ++k) {
-      evaluate(items[k], want_tangent_ ? K : nullptr);
-      if (want_tangent_ && items[k].res.contact_status == B2B_CONTACT_ACTIVE) {
-        items[k].tangent = static_cast<int64_t>(parts[c].size());
-        parts[c].insert(parts[c].end(), K, K + pair::kNdof * pair::kNdof);
+    if (thrown.load(std::memory_order_relaxed)) continue;
+    try {
+      double K[pair::kNdof * pair::kNdof];
+      const int end = std::min(n, (c + 1) * kChunk);
+      for (int k = c * kChunk; k < end; ++k) {
+        evaluate(items[k], want_tangent_ ? K : nullptr);
+        if (want_tangent_ && items[k].res.contact_status == B2B_CONTACT_ACTIVE) {
+          items[k].tangent = static_cast<int64_t>(parts[c].size());
+          parts[c].insert(parts[c].end(), K, K + pair::kNdof * pair::kNdof);
+        }
       }
+    } catch (...) {
+      thrown = true;
     }
   }
+  if (thrown) throw std::bad_alloc();
   for (int c = 0; c < n_chunks && want_tangent_; ++c) {
     const int64_t base = static_cast<int64_t>(tangents_.size());
     tangents_.insert(tangents_.end(), parts[c].begin(), parts[c].end());
@@ -533,9 +572,11 @@ void Updater::finish() {
   // (b2b_model.h), and never as 0, which would read as touching.
   totals[B2B_TOTAL_MIN_GAP] = min_gap == HUGE_VAL ? DBL_MAX : min_gap;
 
+  std::vector<double> build_coords;  // allocated before the model changes
+  if (rebuilt_) build_coords = cur_;
   if (rebuilt_) {
     m.candidates_.swap(new_candidates_);
-    m.build_coords_ = cur_;
+    m.build_coords_.swap(build_coords);
     ++m.builds_;
   }
   counts[B2B_COUNT_CANDIDATES] = static_cast<int>(m.candidates_.size());
