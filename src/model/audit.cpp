@@ -28,25 +28,29 @@ double box_gap(const Box& p, const Box& q) {
   return std::sqrt(s);
 }
 
-// Segments built on one configuration on demand (once each).
+// Segments built on one configuration on demand (once each), kept as cubics.
 class Built {
  public:
-  Built(const Model& m, const std::vector<double>& coords)
-      : m_(m), coords_(coords), seg_(m.table().segment_count()),
-        state_(m.table().segment_count(), 0) {}
-  const curve::Segment* get(int s) {
+  Built(const Model& m, const std::vector<double>& coords) : m_(m), coords_(coords) {}
+  const Cubic* get(int s) {
+    if (state_.empty()) {
+      state_.assign(m_.table().segment_count(), 0);
+      cubic_.resize(m_.table().segment_count());
+    }
     if (state_[s] == 0) {
       const curve::Failure f =
-          build_segment(m_.table().segment(s), coords_.data(), m_.used_index(), seg_[s], false);
+          build_segment(m_.table().segment(s), coords_.data(), m_.used_index(), scratch_, false);
+      if (!f.status) cubic_[s] = Cubic::of(scratch_);
       state_[s] = f.status ? 2 : 1;
     }
-    return state_[s] == 1 ? &seg_[s] : nullptr;
+    return state_[s] == 1 ? &cubic_[s] : nullptr;
   }
 
  private:
   const Model& m_;
   const std::vector<double>& coords_;
-  std::vector<curve::Segment> seg_;
+  curve::Segment scratch_;
+  std::vector<Cubic> cubic_;
   std::vector<char> state_;  // 0 not built, 1 built, 2 cannot be built
 };
 
@@ -111,7 +115,7 @@ int Auditor::reason(int a, int b, const SegmentClosest& c) {
   // 3. the centrelines passed through each other since the commit: the
   //    separation now points against the committed one
   if (!m_.committed_coords().empty()) {
-    const curve::Segment *pa = committed_.get(a), *pb = committed_.get(b);
+    const Cubic *pa = committed_.get(a), *pb = committed_.get(b);
     if (pa && pb) {
       const SegmentClosest k = closest_between(*pa, *pb);
       if (k.dist > 0.0 && dot(k.d, c.d) < 0.0) return B2B_AUDIT_CROSSED;
@@ -152,16 +156,19 @@ std::vector<AuditFinding> Auditor::run() {
   for (const auto& p : pairs) {
     const int a = p.first, b = p.second;
     const double ra = table_.segment(a).radius, rb = table_.segment(b).radius;
-    if (box_gap(boxes[a], boxes[b]) >= ra + rb) continue;
-    if (!may_touch(a, b)) continue;
-    const curve::Segment *sa = current_.get(a), *sb = current_.get(b);
+    if (!may_touch(a, b) || box_gap(boxes[a], boxes[b]) >= ra + rb) continue;
+    const Cubic *sa = current_.get(a), *sb = current_.get(b);
     if (!sa || !sb) continue;  // cannot happen after a successful update
+    if (distance_lower_bound(*sa, *sb) >= ra + rb) continue;
     const SegmentClosest c = closest_between(*sa, *sb);
     const double overlap = ra + rb - c.dist;
     if (!(overlap > tol_ * std::min(ra, rb))) continue;
     if (carried(a, b, c)) continue;
     found.push_back(AuditFinding{a, b, overlap, reason(a, b, c)});
   }
+  std::sort(found.begin(), found.end(), [](const AuditFinding& p, const AuditFinding& q) {
+    return p.a != q.a ? p.a < q.a : p.b < q.b;
+  });
   return found;
 }
 

@@ -19,9 +19,9 @@ struct Eval {
   double f;                                               // |d|^2 / 2
 };
 
-void evaluate(const curve::Segment& a, const curve::Segment& b, double xi, double eta, Eval& e) {
-  a.point(xi, e.xa, e.ta, e.aa);
-  b.point(eta, e.xb, e.tb, e.bb);
+void evaluate(const Cubic& a, const Cubic& b, double xi, double eta, Eval& e) {
+  a.eval(xi, e.xa, e.ta, e.aa);
+  b.eval(eta, e.xb, e.tb, e.bb);
   for (int i = 0; i < 3; ++i) e.d[i] = e.xa[i] - e.xb[i];
   e.f = 0.5 * dot(e.d, e.d);
 }
@@ -30,19 +30,67 @@ double clamp1(double t) { return std::min(1.0, std::max(-1.0, t)); }
 
 }  // namespace
 
+Cubic Cubic::of(const curve::Segment& s) {
+  // From x(-1) = P0, x(1) = P1, x'(-1) = T0, x'(1) = T1.
+  double p0[3], t0[3], p1[3], t1[3];
+  s.point(-1.0, p0, t0, nullptr);
+  s.point(1.0, p1, t1, nullptr);
+  Cubic q;
+  for (int i = 0; i < 3; ++i) {
+    q.c[i] = 0.25 * (t1[i] - t0[i]);
+    q.d[i] = 0.25 * (t0[i] + t1[i] - (p1[i] - p0[i]));
+    q.a[i] = 0.5 * (p0[i] + p1[i]) - q.c[i];
+    q.b[i] = 0.5 * (p1[i] - p0[i]) - q.d[i];
+    q.p0[i] = p0[i];
+    q.p1[i] = p1[i];
+  }
+  // x(xi) - chord(xi) = c (xi^2 - 1) + d (xi^3 - xi), and on [-1, 1]
+  // |xi^2 - 1| <= 1, |xi^3 - xi| <= 2 / (3 sqrt 3) < 0.3850.
+  q.bulge = std::sqrt(dot(q.c, q.c)) + 0.3850 * std::sqrt(dot(q.d, q.d));
+  return q;
+}
+
+double distance_lower_bound(const Cubic& a, const Cubic& b) {
+  // Closest points of the chords p = a.p0 + s u, q = b.p0 + t v, s, t in
+  // [0, 1]: the unconstrained minimum, clamped in s, t re-solved for s
+  // clamped, then s re-solved for that t.
+  double u[3], v[3], w[3];
+  for (int i = 0; i < 3; ++i) {
+    u[i] = a.p1[i] - a.p0[i];
+    v[i] = b.p1[i] - b.p0[i];
+    w[i] = a.p0[i] - b.p0[i];
+  }
+  const double uu = dot(u, u), vv = dot(v, v), uv = dot(u, v), uw = dot(u, w), vw = dot(v, w);
+  const auto clamp01 = [](double t) { return std::min(1.0, std::max(0.0, t)); };
+  double s = 0.0, t = 0.0;
+  const double det = uu * vv - uv * uv;
+  if (uu > 0.0 && det > 1e-12 * uu * vv) s = clamp01((uv * vw - vv * uw) / det);
+  if (vv > 0.0) t = (uv * s + vw) / vv;
+  if (t < 0.0 || t > 1.0 || !(vv > 0.0)) {
+    t = vv > 0.0 ? clamp01(t) : 0.0;
+    s = uu > 0.0 ? clamp01((uv * t - uw) / uu) : 0.0;
+  }
+  double d[3];
+  for (int i = 0; i < 3; ++i) d[i] = w[i] + s * u[i] - t * v[i];
+  // Less a slack for a nearly parallel pair (det tiny: s = 0 need not be
+  // the chords' closest point, off by at most ~1e-6 of their lengths).
+  const double slack = 1e-6 * (std::sqrt(uu) + std::sqrt(vv));
+  return std::sqrt(dot(d, d)) - a.bulge - b.bulge - slack;
+}
+
 int at_segment_end(double t) {
   if (t >= 1.0 - kEndTol) return 1;
   if (t <= -1.0 + kEndTol) return -1;
   return 0;
 }
 
-SegmentClosest closest_between(const curve::Segment& a, const curve::Segment& b) {
+SegmentClosest closest_between(const Cubic& a, const Cubic& b) {
   // 1. the closest pair of samples
   double pa[kSamples][3], pb[kSamples][3];
   for (int k = 0; k < kSamples; ++k) {
     const double t = -1.0 + 2.0 * k / (kSamples - 1);
-    a.point(t, pa[k], nullptr, nullptr);
-    b.point(t, pb[k], nullptr, nullptr);
+    a.eval(t, pa[k], nullptr, nullptr);
+    b.eval(t, pb[k], nullptr, nullptr);
   }
   int bi = 0, bj = 0;
   double best = HUGE_VAL;

@@ -5,6 +5,7 @@
  * documented status, a message, and leaves the outputs as they were. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "model_support.h"
@@ -329,6 +330,123 @@ START_TEST(crossed_since_commit_is_listed) {
 }
 END_TEST
 
+/* The audit against brute force on a random fibre network (every kind,
+ * rings): with "parallel_angle" 89.9 degrees the element leaves (nearly)
+ * every pair without force, so the audit must list every overlapping pair.
+ * Reference: each segment sampled at 129 points by b2b_segment_eval, the
+ * smallest sampled distance of every allowed pair (an upper bound of the
+ * true one, within about a sample spacing). Every pair overlapping by more
+ * than 0.05 r in the samples is listed (unless a contact touches it), every
+ * listed one overlaps in the samples by more than the tolerance less the
+ * sampling error, and the audit's overlap is at least the sampled one. */
+#define NS 129
+START_TEST(random_network_against_brute_force) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  tst_rng rng;
+  tst_rng_seed(&rng, 4242);
+  tst_scene sc;
+  tst_network(&rng, 40, 9, 0.5, 2.0, 0.1, 0.3, 5, 0, &sc);
+  b2b_params *p = NULL;
+  ok(b2b_params_create(&p, msg, sizeof msg), msg);
+  ok(b2b_params_set_real(p, "penalty", 1e3, msg, sizeof msg), msg);
+  ok(b2b_params_set_real(p, "parallel_angle", 89.9, msg, sizeof msg), msg);
+  ok(b2b_params_finalize(p, msg, sizeof msg), msg);
+  b2b_model *m = tst_model(&sc, p, 1);
+  tst_update(m, &sc, 0);
+  const double tol = 0.01;
+  int n = 0;
+  ok(b2b_model_audit(m, tol, &n, NULL, NULL, NULL, 0, msg, sizeof msg), msg);
+  int *pairs = malloc(sizeof(int) * 4 * (size_t)(n + 1)), *reasons = malloc(sizeof(int) * (size_t)(n + 1));
+  double *overlap = malloc(sizeof(double) * (size_t)(n + 1));
+  int listed_n = 0;
+  ok(b2b_model_audit(m, tol, &listed_n, pairs, overlap, reasons, n, msg, sizeof msg), msg);
+  ck_assert_int_eq(listed_n, n);
+  /* segments in contact (and their neighbours) are left out of the coverage check */
+  int n_contacts = contacts(m), busy[2 * 64][2];
+  ck_assert_int_le(n_contacts, 64);
+  for (int k = 0; k < n_contacts; ++k) {
+    int pr[4];
+    ok(b2b_model_get_contact(m, k, NULL, pr, NULL, NULL, NULL, 0, msg, sizeof msg), msg);
+    busy[2 * k][0] = pr[0], busy[2 * k][1] = pr[1];
+    busy[2 * k + 1][0] = pr[2], busy[2 * k + 1][1] = pr[3];
+  }
+  /* samples of every segment */
+  int n_seg = 0, seg_beam[4096], seg_index[4096];
+  static double pts[4096][NS][3];
+  for (int b = 0; b < sc.n_beams; ++b) {
+    int ns;
+    ok(b2b_beam_segment_count(sc.kind[b], sc.count[b], sc.closed[b], &ns, msg, sizeof msg), msg);
+    for (int s = 0; s < ns; ++s, ++n_seg) {
+      ck_assert_int_lt(n_seg, 4096);
+      int local[4], r0, r1;
+      ok(b2b_beam_segment_patch(sc.kind[b], sc.count[b], sc.closed[b], s, local, &r0, &r1, msg,
+                                sizeof msg), msg);
+      double X[12];
+      for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < 3; ++i)
+          X[3 * k + i] = local[k] < 0 ? 0.0 : sc.x[3 * (sc.first[b] + local[k]) + i];
+      for (int q = 0; q < NS; ++q) {
+        double x[9];
+        ok(b2b_segment_eval(sc.kind[b], r0, r1, X, NULL, -1.0 + 2.0 * q / (NS - 1), x, NULL,
+                            NULL, msg, sizeof msg), msg);
+        memcpy(pts[n_seg][q], x, sizeof(double) * 3);
+      }
+      seg_beam[n_seg] = b;
+      seg_index[n_seg] = s;
+    }
+  }
+  int checked = 0, overlapping = 0;
+  for (int i = 0; i < n_seg; ++i)
+    for (int j = i + 1; j < n_seg; ++j) {
+      const int bi = seg_beam[i], bj = seg_beam[j];
+      if (bi == bj) continue; /* no self-contact in this scene */
+      const double ra = sc.radius[bi], rb = sc.radius[bj];
+      double d2 = HUGE_VAL;
+      for (int p1 = 0; p1 < NS; ++p1)
+        for (int q = 0; q < NS; ++q) {
+          const double dx = pts[i][p1][0] - pts[j][q][0], dy = pts[i][p1][1] - pts[j][q][1],
+                       dz = pts[i][p1][2] - pts[j][q][2];
+          const double e = dx * dx + dy * dy + dz * dz;
+          if (e < d2) d2 = e;
+        }
+      const double ov = ra + rb - sqrt(d2), rmin = fmin(ra, rb);
+      int k = -1;
+      for (int f = 0; f < n; ++f) {
+        const int *pr = pairs + 4 * f;
+        if (pr[0] == bi && pr[1] == seg_index[i] && pr[2] == bj && pr[3] == seg_index[j]) k = f;
+      }
+      if (k >= 0) {
+        /* a sample spacing of 2/128 of a segment of length <= 0.7: error < 0.006 */
+        ck_assert_msg(ov > tol * rmin - 0.006, "listed %d.%d-%d.%d overlaps by %g in the samples",
+                      bi, seg_index[i], bj, seg_index[j], ov);
+        ck_assert_msg(overlap[k] >= ov - 1e-9, "audit overlap %g < sampled %g", overlap[k], ov);
+        ++checked;
+      }
+      if (ov > 0.05 * rmin) {
+        ++overlapping;
+        int near_contact = 0;
+        for (int c = 0; c < 2 * n_contacts; ++c)
+          for (int w = 0; w < 2; ++w) {
+            const int b = w ? bj : bi, s = w ? seg_index[j] : seg_index[i];
+            if (busy[c][0] == b && abs(busy[c][1] - s) <= 1) near_contact = 1;
+          }
+        ck_assert_msg(k >= 0 || near_contact, "%d.%d-%d.%d overlaps by %g (samples), not listed",
+                      bi, seg_index[i], bj, seg_index[j], ov);
+      }
+    }
+  printf("random network: %d segments, %d contacts, %d listed (%d checked), %d overlapping by "
+         "> 0.05 r in the samples\n", n_seg, n_contacts, n, checked, overlapping);
+  ck_assert_int_eq(checked, n);
+  ck_assert_int_ge(overlapping, 10);
+  free(pairs);
+  free(reasons);
+  free(overlap);
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+  tst_scene_free(&sc);
+}
+END_TEST
+
 START_TEST(bad_input) {
   char msg[B2B_ERRMSG_LEN] = "";
   b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
@@ -407,6 +525,7 @@ int main(void) {
   tcase_add_test(tc, convex_joint_is_listed_unless_carried);
   tcase_add_test(tc, self_contact_exclusion_is_listed);
   tcase_add_test(tc, crossed_since_commit_is_listed);
+  tcase_add_test(tc, random_network_against_brute_force);
   tcase_add_test(tc, bad_input);
   suite_add_tcase(s, tc);
   return tst_run_suite(s);
