@@ -17,7 +17,9 @@
  *            models;
  *   audit    b2b_model_audit after the update (size query and listing),
  *            best of 3;
- * and prints audit / update and audit / build. Checks (exit 1): every call
+ * and prints audit / update and audit / build, and the findings by reason
+ * (PARALLEL / OUTSIDE_BOTH / NEVER_EVALUATED / EXCLUDED_SELF / CROSSED /
+ * OTHER). Checks (exit 1): every call
  * succeeds, the listing's count equals the size query's; without --quick
  * also audit / update <= 0.20 at every size. */
 #include <math.h>
@@ -117,14 +119,14 @@ int main(int argc, char **argv) {
   OK(b2b_params_set_real(p, "penalty", 1e3, msg, sizeof msg), "penalty");
   OK(b2b_params_finalize(p, msg, sizeof msg), "finalize params");
   int failed = 0;
-  printf("| segments | contacts | findings | build [ms] | update [ms] | audit [ms] | "
-         "audit / update | audit / build |\n|---|---|---|---|---|---|---|---|\n");
+  printf("| segments | contacts | findings (P / J / N / S / C / O) | build [ms] | update [ms] | "
+         "audit [ms] | audit / update | audit / build |\n|---|---|---|---|---|---|---|---|\n");
   for (int n_seg = 1000; n_seg <= max; n_seg *= 10) {
     rng_state = 12345u + (uint64_t)n_seg;
     scene s;
     make_scene(n_seg, &s);
     double t_build = HUGE_VAL, t_update = HUGE_VAL, t_audit = HUGE_VAL;
-    int contacts = 0, found = 0;
+    int contacts = 0, found = 0, by_reason[6] = {0};
     for (int rep = 0; rep < 3; ++rep) {
       b2b_model *m = make_model(&s, p);
       double t0 = now();
@@ -153,14 +155,20 @@ int main(int argc, char **argv) {
         failed = 1;
       }
       found = n;
+      memset(by_reason, 0, sizeof by_reason);
+      for (int k = 0; k < listed; ++k)
+        if (reasons[k] >= 0 && reasons[k] < 6) ++by_reason[reasons[k]];
       free(pairs);
       free(reasons);
       free(overlap);
       b2b_model_destroy(&m);
     }
     const double ratio = t_audit / t_update;
-    printf("| %d | %d | %d | %.2f | %.2f | %.2f | %.3f | %.3f |\n", s.n_fibres * SEG_PER_FIBRE,
-           contacts, found, 1e3 * t_build, 1e3 * t_update, 1e3 * t_audit, ratio,
+    printf("| %d | %d | %d (%d / %d / %d / %d / %d / %d) | %.2f | %.2f | %.2f | %.3f | %.3f |\n",
+           s.n_fibres * SEG_PER_FIBRE, contacts, found, by_reason[B2B_AUDIT_PARALLEL],
+           by_reason[B2B_AUDIT_OUTSIDE_BOTH], by_reason[B2B_AUDIT_NEVER_EVALUATED],
+           by_reason[B2B_AUDIT_EXCLUDED_SELF], by_reason[B2B_AUDIT_CROSSED],
+           by_reason[B2B_AUDIT_OTHER], 1e3 * t_build, 1e3 * t_update, 1e3 * t_audit, ratio,
            t_audit / t_build);
     fflush(stdout);
     if (!quick && ratio > 0.20) {
