@@ -16,6 +16,7 @@
 !>              _finalize, _update, _contact_count, _get_contact, _add_residual,
 !>              _add_tangent_dense, _add_tangent_banded, _tangent_coo, _commit,
 !>              _revert, _save_size, _save, _restore, _stats
+!>              and the interpenetration audit b2b_model_audit
 !>
 !> Conventions of the wrappers:
 !>  * Arrays are assumed-shape and must be contiguous (sections are copied in
@@ -77,6 +78,7 @@ module b2b
   public :: b2b_model_add_tangent_banded, b2b_model_tangent_coo, b2b_model_commit
   public :: b2b_model_revert, b2b_model_save_size, b2b_model_save, b2b_model_restore
   public :: b2b_model_stats
+  public :: b2b_model_audit
 
   !> Contact parameters (b2b_params in C): an opaque handle, null until
   !> b2b_params_create. Set options by key, finalize, then pass it to
@@ -517,6 +519,18 @@ module b2b
       type(c_ptr), value :: model
       integer(c_int), intent(inout) :: counts(*)
       real(c_double), intent(inout) :: totals(*)
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_audit(model, tolerance, n_found, pairs, overlap, reasons, capacity, &
+                               errmsg, errmsg_len) bind(C, name='b2b_model_audit') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model, pairs, overlap, reasons
+      real(c_double), value :: tolerance
+      integer(c_int), intent(inout) :: n_found
+      integer(c_int), value :: capacity
       character(kind=c_char), intent(inout) :: errmsg(*)
       integer(c_int), value :: errmsg_len
       integer(c_int) :: st
@@ -1708,6 +1722,70 @@ contains
     st = c_b2b_model_stats(model%ptr, c, t, buf, int(size(buf), c_int))
     if (st == B2B_OK .and. present(counts)) counts = int(c)
     if (st == B2B_OK .and. present(totals)) totals = t
+    call finish(me, st, buf, ierr, errmsg)
+  end subroutine
+
+  !> The interpenetration audit of the last update (b2b_model.h, "Interpenetration
+  !> audit"): n_found pairs of segments that overlap by more than
+  !> tolerance * (the smaller radius) and carry no force. Without pairs,
+  !> overlap and reasons only n_found is set (the size query); with them
+  !> (all three), finding k is pairs(:, k) = beam A, segment A, beam B,
+  !> segment B (1-based), overlap(k) = r_A + r_B - centreline distance and
+  !> reasons(k) = B2B_AUDIT_*; pairs must be (4, n) and the capacity is the
+  !> smallest of n, size(overlap), size(reasons) (fewer than the findings:
+  !> B2B_ERR_SIZE, nothing written). Run it after the converged update of a
+  !> step, before b2b_model_commit.
+  subroutine b2b_model_audit(model, tolerance, n_found, pairs, overlap, reasons, ierr, errmsg)
+    type(b2b_model), intent(in) :: model
+    real(c_double), intent(in) :: tolerance
+    integer, intent(inout) :: n_found
+    integer, intent(inout), optional :: pairs(:, :)
+    real(c_double), intent(inout), optional :: overlap(:)
+    integer, intent(inout), optional :: reasons(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(out), optional :: errmsg
+    character(len=*), parameter :: me = 'b2b_model_audit'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, cn, capacity
+    integer(c_int), allocatable, target :: cpairs(:, :), creasons(:)
+    real(c_double), allocatable, target :: coverlap(:)
+    logical :: given
+    given = present(pairs) .or. present(overlap) .or. present(reasons)
+    if (given) then
+      if (.not. (present(pairs) .and. present(overlap) .and. present(reasons))) then
+        call finish_text(me, int(B2B_ERR_NULL, c_int), me // ': give pairs, overlap and ' // &
+                         'reasons together (or none of them for the size query)', ierr, errmsg)
+        return
+      end if
+      if (size(pairs, 1) /= 4) then
+        call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': pairs has shape (' // &
+                         shape_text(shape(pairs)) // '), expected (4,n)', ierr, errmsg)
+        return
+      end if
+      capacity = int(min(size(pairs, 2), size(overlap), size(reasons), int(huge(capacity))), c_int)
+    else
+      capacity = 0
+    end if
+    ! The library writes into buffers of C ints, converted (and made 1-based) below.
+    allocate (cpairs(4, max(capacity, 1_c_int)), creasons(max(capacity, 1_c_int)), &
+              coverlap(max(capacity, 1_c_int)))
+    buf = c_null_char
+    cn = 0
+    if (given) then
+      st = c_b2b_model_audit(model%ptr, tolerance, cn, c_loc(cpairs), c_loc(coverlap), &
+                             c_loc(creasons), capacity, buf, int(size(buf), c_int))
+    else
+      st = c_b2b_model_audit(model%ptr, tolerance, cn, c_null_ptr, c_null_ptr, c_null_ptr, &
+                             0_c_int, buf, int(size(buf), c_int))
+    end if
+    if (st == B2B_OK) then
+      n_found = int(cn)
+      if (given .and. cn > 0) then
+        pairs(:, 1:cn) = int(cpairs(:, 1:cn)) + 1
+        overlap(1:cn) = coverlap(1:cn)
+        reasons(1:cn) = int(creasons(1:cn))
+      end if
+    end if
     call finish(me, st, buf, ierr, errmsg)
   end subroutine
 

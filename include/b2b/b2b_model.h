@@ -308,6 +308,56 @@ B2B_EXPORT int b2b_model_restore(b2b_model *model, const void *buffer, int64_t s
 B2B_EXPORT int b2b_model_stats(const b2b_model *model, int counts[16], double totals[8],
                                char *errmsg, int errmsg_len);
 
+/*
+ * Interpenetration audit (b2b_model_audit)
+ * ----------------------------------------
+ * For the configuration of the last update: every pair of segments that may
+ * touch (their groups form a pair, they share no host node, on one beam only
+ * with self-contact on) whose surfaces overlap, r_A + r_B - (centreline
+ * distance) > tolerance * min(r_A, r_B), but that carries no force (no active
+ * contact on it, nor on the pair across a joint where its closest point
+ * lies). Detection is independent of the update's active set: its own search
+ * (a uniform hash grid over the segments' boxes grown by their radii) and its
+ * own distance (sampled, then projected Newton in [-1, 1]^2). Each finding:
+ *   pairs[4k .. 4k+3]  beam A, segment A, beam B, segment B (0-based; A the
+ *                      lower segment in model order), findings in that order
+ *   overlap[k]         r_A + r_B - centreline distance (> 0)
+ *   reasons[k]         B2B_AUDIT_*, the first that applies in this order:
+ *     EXCLUDED_SELF    one beam, within its self-contact exclusion length
+ *     NEVER_EVALUATED  not among the last update's broad-phase candidates
+ *     CROSSED          the centrelines passed through each other since the
+ *                      last commit (the separation at the closest points
+ *                      points against the committed one)
+ *     PARALLEL         crossing angle below the group pair's parallel_angle
+ *     OUTSIDE_BOTH     the closest point is a joint or a beam end (the
+ *                      segments on both sides of it point away: a convex
+ *                      joint of straight segments)
+ *     OTHER            none of these (the element found no force)
+ * A host runs it after the converged update of a step and before
+ * b2b_model_commit (after the commit the committed configuration is the
+ * current one, so CROSSED cannot be told), and cuts the step back or stops
+ * when n_found > 0. tolerance: >= 0, relative to the smaller radius (e.g.
+ * 0.01: overlaps under 1% of the radius are not reported).
+ * With pairs, overlap and reasons all NULL only *n_found is set (the size
+ * query); else all three must be given, with room for capacity findings:
+ * capacity < the count is B2B_ERR_SIZE (nothing written; the message gives
+ * the count). B2B_ERR_STATE before an update (or after revert/restore),
+ * B2B_ERR_NONFINITE / B2B_ERR_RANGE for a NaN, infinite or negative
+ * tolerance. Costs well under an update (README, "Interpenetration audit").
+ */
+enum {
+  B2B_AUDIT_OTHER = 0,
+  B2B_AUDIT_PARALLEL = 1,
+  B2B_AUDIT_OUTSIDE_BOTH = 2,
+  B2B_AUDIT_NEVER_EVALUATED = 3,
+  B2B_AUDIT_EXCLUDED_SELF = 4,
+  B2B_AUDIT_CROSSED = 5
+};
+
+B2B_EXPORT int b2b_model_audit(const b2b_model *model, double tolerance, int *n_found,
+                               int *pairs, double *overlap, int *reasons, int capacity,
+                               char *errmsg, int errmsg_len);
+
 #ifdef __cplusplus
 }
 #endif

@@ -166,6 +166,14 @@ class Model {
                           const std::vector<double>& hi, const std::vector<double>& total) const;
   double effective_margin() const;
   uint64_t fingerprint() const;
+
+ public:
+  // --- read by the interpenetration audit (audit.hpp), which keeps its own
+  // search and distances and only looks up what the last update recorded ---
+  const std::vector<double>& current_coords() const { return current_coords_; }
+  const std::vector<double>& committed_coords() const { return committed_coords_; }
+  const std::vector<int>& used_index() const { return used_index_; }
+  const std::vector<std::pair<int, int>>& candidates() const { return candidates_; }
 };
 
 }  // namespace model

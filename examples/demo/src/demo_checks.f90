@@ -43,6 +43,9 @@
 !>                       equal turns; T_out = |reaction| of beam_a's
 !>                       supports (its pulled node), T_in = |load on beam_a|.
 !>                       At least two such steps (a plateau) are required.
+!> And for every scene with contact, whatever its &check (or none): the
+!> interpenetration audit (demo_contact_hook, after every converged step)
+!> found no pair that overlaps with no force (issue 16).
 module demo_checks
   use demo_kinds, only: dp, pi
   use demo_model, only: scene_model, external_force
@@ -64,6 +67,7 @@ module demo_checks
   integer, save :: first_slip_step = 0
   real(dp), save :: ratio_formula = 0.0_dp, turn_total = 0.0_dp, ratio_first = 0.0_dp, ratio_last = 0.0_dp
   real(dp), save :: t_in_last = 0.0_dp
+  integer, save :: audit_found = 0
 
 contains
 
@@ -189,6 +193,7 @@ contains
     real(dp) :: fc(3), pext(3), sgn, w
     integer :: k, seg
 
+    audit_found = snap%audit_found
     if (len_trim(m%check%kind) == 0) return
     total_cut = total_cut + row%cutbacks
     min_active = min(min_active, snap%n)
@@ -326,12 +331,23 @@ contains
     end associate
   end subroutine check_step
 
+  !> The audit part of every scene's check: no finding in the whole run.
+  subroutine audit_verdict(m)
+    type(scene_model), intent(in) :: m
+    if (.not. m%contact%enabled) return
+    write (*, '(a,i0,a)') trim(m%name) // ': check audit: ', audit_found, &
+      ' pair(s) overlapping with no force after converged steps'
+    if (audit_found > 0) call fail('the audit found ' // str(audit_found) // &
+                                   ' pair(s) overlapping with no force (see "audit, step")')
+  end subroutine audit_verdict
+
   !> Prints the summary of the scene's check; .false. if any part failed.
   logical function check_finish(m) result(passed)
     type(scene_model), intent(in) :: m
     character(len=*), parameter :: fmt_err = '(a,es13.6,a,es13.6,a,es9.2)'
+    call audit_verdict(m)
     if (len_trim(m%check%kind) == 0) then
-      passed = .true.
+      passed = ok
       return
     end if
     select case (trim(m%check%kind))

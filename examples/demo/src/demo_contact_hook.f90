@@ -18,6 +18,10 @@
 !>    the contacts need is computed from their nodes (b2b_model_get_contact)
 !>    and reported as an overflow of the linear system: the Newton loop
 !>    widens the band (or goes dense) and assembles again.
+!>  * contact_hook_audit after a converged (sub)step, before its commit:
+!>    b2b_model_audit (tolerance audit_tolerance of the smaller radius) lists
+!>    the pairs that overlap with no force; each is printed, and the count
+!>    goes into the snapshot, which the scene check fails on (demo_checks).
 !>  * contact_hook_commit after a converged (sub)step: b2b_model_commit.
 !>  * contact_hook_revert on a cut-back: b2b_model_revert.
 !> A failed update (e.g. a segment folded by a wild Newton iterate) is not
@@ -32,7 +36,9 @@ module demo_contact_hook
                  b2b_model_set_group_pair, b2b_model_set_self_contact, b2b_model_finalize, &
                  b2b_model_update, b2b_model_contact_count, b2b_model_get_contact, b2b_model_add_residual, &
                  b2b_model_add_tangent_banded, b2b_model_add_tangent_dense, b2b_model_commit, &
-                 b2b_model_revert, b2b_model_stats, b2b_model_destroy, &
+                 b2b_model_revert, b2b_model_stats, b2b_model_destroy, b2b_model_audit, &
+                 B2B_AUDIT_OTHER, B2B_AUDIT_PARALLEL, B2B_AUDIT_OUTSIDE_BOTH, B2B_AUDIT_NEVER_EVALUATED, &
+                 B2B_AUDIT_EXCLUDED_SELF, B2B_AUDIT_CROSSED, &
                  B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL, &
                  B2B_CURVE_HERMITE_NODAL_WEIGHTED, B2B_LAW_LINEAR, B2B_LAW_QUADRATIC, B2B_ERR_RANGE, &
                  B2B_TANGENT_EXACT, B2B_TANGENT_SYMMETRIC, B2B_TANGENT_MAIN, B2B_TANGENT_FD
@@ -41,6 +47,10 @@ module demo_contact_hook
   private
   public :: contact_hook_init, contact_hook_forces, contact_hook_commit, contact_hook_revert
   public :: contact_hook_failed, contact_hook_signature, contact_hook_snapshot, contact_hook_finish
+  public :: contact_hook_audit
+
+  !> Overlaps below this fraction of the smaller radius are not reported by the audit.
+  real(dp), parameter, public :: audit_tolerance = 0.01_dp
 
   !> One active contact of the last update, as b2b_model_get_contact gives it.
   type, public :: contact_point
@@ -55,6 +65,7 @@ module demo_contact_hook
     type(contact_point), allocatable :: c(:)
     integer :: counts(16) = 0
     real(dp) :: totals(8) = 0.0_dp
+    integer :: audit_found = 0    !< findings of the run's audits so far (b2b_model_audit)
   end type contact_snapshot
 
   type(b2b_model), save :: model
@@ -64,6 +75,7 @@ module demo_contact_hook
   logical, save :: failed = .false.
   character(len=512), save :: fail_msg = ''
   type(contact_snapshot), save :: last
+  integer, save :: audit_total = 0     !< findings of every audit since contact_hook_init
   integer, allocatable, save :: eq_all(:, :)   !< every dof numbered, for the contact part of f_int
 
 contains
@@ -109,6 +121,7 @@ contains
     updated = .false.
     failed = .false.
     last%n = 0
+    audit_total = 0
     if (.not. m%contact%enabled) return
     call get_environment_variable('B2B_DEMO_DEBUG', length=i)
     debug = i > 0
@@ -289,7 +302,50 @@ contains
     if (last%n > 0) s%c = last%c(1:last%n)
     s%counts = last%counts
     s%totals = last%totals
+    s%audit_found = audit_total
   end subroutine contact_hook_snapshot
+
+  !> The interpenetration audit of the converged update (before its commit,
+  !> so that pairs crossed since the last commit are told): prints every pair
+  !> that overlaps by more than audit_tolerance of the smaller radius with no
+  !> force, and adds the count to the run's total (in the snapshot).
+  subroutine contact_hook_audit(m, step)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: step
+    integer :: n, k, ierr
+    integer, allocatable :: pairs(:, :), reasons(:)
+    real(dp), allocatable :: overlap(:)
+    character(len=512) :: msg
+    if (.not. (on .and. m%contact%enabled .and. updated)) return
+    call b2b_model_audit(model, audit_tolerance, n, ierr=ierr, errmsg=msg)
+    call check(ierr, msg, 'audit')
+    if (n == 0) return
+    allocate (pairs(4, n), reasons(n), overlap(n))
+    call b2b_model_audit(model, audit_tolerance, n, pairs, overlap, reasons, ierr, msg)
+    call check(ierr, msg, 'audit')
+    audit_total = audit_total + n
+    write (*, '(2x,a,i0,a,i0,a)') 'audit, step ', step, ': ', n, ' pair(s) overlap with no force'
+    do k = 1, n
+      write (*, '(4x,a,i0,a,i0,a,i0,a,i0,a,es10.3,a,es9.2,a)') 'beam ', pairs(1, k), ' segment ', pairs(2, k), &
+        ' / beam ', pairs(3, k), ' segment ', pairs(4, k), ': overlap ', overlap(k), ' (', &
+        overlap(k) / min(m%beam_radius(pairs(1, k)), m%beam_radius(pairs(3, k))), ' r), ' // &
+        trim(audit_reason(reasons(k)))
+    end do
+  end subroutine contact_hook_audit
+
+  function audit_reason(r) result(name)
+    integer, intent(in) :: r
+    character(len=:), allocatable :: name
+    select case (r)
+    case (B2B_AUDIT_PARALLEL); name = 'parallel (below parallel_angle)'
+    case (B2B_AUDIT_OUTSIDE_BOTH); name = 'outside on both sides (a convex joint or a beam end)'
+    case (B2B_AUDIT_NEVER_EVALUATED); name = 'never evaluated (not a candidate of the search)'
+    case (B2B_AUDIT_EXCLUDED_SELF); name = 'excluded by the self-contact length'
+    case (B2B_AUDIT_CROSSED); name = 'crossed since the last commit'
+    case (B2B_AUDIT_OTHER); name = 'other'
+    case default; name = 'unknown reason ' // str(r)
+    end select
+  end function audit_reason
 
   subroutine contact_hook_commit(m)
     type(scene_model), intent(in) :: m

@@ -28,7 +28,7 @@ module demo_solver
   use demo_linear_system, only: linear_system, sys_setup, sys_solve
   use demo_assembly, only: assemble
   use demo_contact_hook, only: contact_hook_init, contact_hook_commit, contact_hook_revert, contact_hook_failed, &
-                               contact_hook_signature, contact_hook_snapshot, contact_snapshot
+                               contact_hook_signature, contact_hook_snapshot, contact_snapshot, contact_hook_audit
   use demo_history, only: run_history, step_row, iter_row
   use demo_output, only: output_begin, output_step, output_finish, output_contacts
   use demo_checks, only: check_step
@@ -116,6 +116,7 @@ contains
         floor = rounding_floor(m)
         iters = iters + sub_iters
         if (ok) then
+          call contact_hook_audit(m, step)
           call contact_hook_snapshot(snap)
           call contact_hook_commit(m)
           lam = lam + dlam
