@@ -457,7 +457,7 @@ START_TEST(committed_friction_force_is_kept) {
         worst = fmax(worst, err);
         worst_normal = fmax(worst_normal, tn);
         ck_assert_msg(i1[B2B_INFO_FRICTION_STATE] == B2B_FRICTION_STICK, "%s: not stick", what);
-        ck_assert_msg(err <= 1e-12, "%s: committed force T = (%g %g %g) rebuilt as (%g %g %g), "
+        ck_assert_msg(err <= 1e-11, "%s: committed force T = (%g %g %g) rebuilt as (%g %g %g), "
                       "rel. error %.2e", what, t1[0], t1[1], t1[2], t2[0], t2[1], t2[2], err);
         ck_assert_msg(tn <= 1e-11, "%s: friction force not tangential, |T.n|/|T| = %.2e", what,
                       tn);
