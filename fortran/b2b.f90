@@ -896,8 +896,34 @@ contains
     real(c_double), intent(in), contiguous, target, optional :: end_tangents(:, :)
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
+    type(c_ptr) :: pk, pt
+    integer :: kshape(2), tshape(2)
+    ! The optional arrays go on as addresses and shapes: gfortran 12 passing
+    ! an absent optional contiguous array on to another optional dummy loads
+    ! through its null data pointer (an UBSan finding in every call without
+    ! end_tangents or tangent).
+    call optional_address(pk, kshape)
+    if (present(tangent)) call optional_address(pk, kshape, c_loc(tangent), shape(tangent))
+    call optional_address(pt, tshape)
+    if (present(end_tangents)) &
+      call optional_address(pt, tshape, c_loc(end_tangents), shape(end_tangents))
     call eval_pair('b2b_pair_eval', params, segments, X, radii, hist_old, hist_new, &
-                   contact_status, info, residual, tangent, end_tangents, ierr, errmsg)
+                   contact_status, info, residual, pk, kshape, pt, tshape, ierr, errmsg)
+  end subroutine
+
+  ! An optional array's address and shape for eval_pair: (c_null_ptr, -1)
+  ! where absent.
+  subroutine optional_address(p, sh, addr, actual_shape)
+    type(c_ptr), intent(out) :: p
+    integer, intent(out) :: sh(2)
+    type(c_ptr), intent(in), optional :: addr
+    integer, intent(in), optional :: actual_shape(2)
+    p = c_null_ptr
+    sh = -1
+    if (present(addr)) then
+      p = addr
+      sh = actual_shape
+    end if
   end subroutine
 
   !> b2b_pair_eval with parameters held at segment ends (End contact in the
@@ -926,20 +952,29 @@ contains
     character(len=*), intent(out), optional :: errmsg
     character(len=*), parameter :: me = 'b2b_pair_eval_ends'
     logical :: ok
+    type(c_ptr) :: pk, pt
+    integer :: kshape(2), tshape(2)
     if (.not. shape_is(shape(ends), [2])) then
       call finish_size(me, 'ends', shape(ends), [2], ierr, errmsg)
       return
     end if
     call check_int_matrix(me, 'ends', reshape(ends, [2, 1]), ok, ierr, errmsg)
     if (.not. ok) return
+    call optional_address(pk, kshape)  ! as in b2b_pair_eval
+    if (present(tangent)) call optional_address(pk, kshape, c_loc(tangent), shape(tangent))
+    call optional_address(pt, tshape)
+    if (present(end_tangents)) &
+      call optional_address(pt, tshape, c_loc(end_tangents), shape(end_tangents))
     call eval_pair(me, params, segments, X, radii, hist_old, hist_new, contact_status, info, &
-                   residual, tangent, end_tangents, ierr, errmsg, int(ends, c_int))
+                   residual, pk, kshape, pt, tshape, ierr, errmsg, int(ends, c_int))
   end subroutine
 
   ! b2b_pair_eval and b2b_pair_eval_ends (cends present): the argument checks
-  ! and the call.
+  ! and the call. tangent and end_tangents by address and shape (shape -1:
+  ! absent; see b2b_pair_eval).
   subroutine eval_pair(me, params, segments, X, radii, hist_old, hist_new, contact_status, &
-                       info, residual, tangent, end_tangents, ierr, errmsg, cends)
+                       info, residual, tangent, kshape, end_tangents, tshape, ierr, errmsg, &
+                       cends)
     character(len=*), intent(in) :: me
     type(b2b_params), intent(in) :: params
     integer, intent(in), contiguous :: segments(:, :)
@@ -950,8 +985,8 @@ contains
     integer, intent(inout) :: contact_status
     real(c_double), intent(inout), contiguous :: info(:)
     real(c_double), intent(inout), contiguous :: residual(:)
-    real(c_double), intent(inout), contiguous, target, optional :: tangent(:, :)
-    real(c_double), intent(in), contiguous, target, optional :: end_tangents(:, :)
+    type(c_ptr), intent(in) :: tangent, end_tangents
+    integer, intent(in) :: kshape(2), tshape(2)
     integer, intent(out), optional :: ierr
     character(len=*), intent(out), optional :: errmsg
     integer(c_int), intent(in), optional :: cends(2)
@@ -999,25 +1034,25 @@ contains
     pk = c_null_ptr
     pt = c_null_ptr
     ldk = B2B_PAIR_NDOF
-    if (present(tangent)) then
-      if (size(tangent, 1) < B2B_PAIR_NDOF .or. size(tangent, 2) /= B2B_PAIR_NDOF) then
+    if (kshape(1) >= 0) then
+      if (kshape(1) < B2B_PAIR_NDOF .or. kshape(2) /= B2B_PAIR_NDOF) then
         call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': tangent has shape (' // &
-                         shape_text(shape(tangent)) // '), expected (ldk,24) with ldk >= 24', &
+                         shape_text(kshape) // '), expected (ldk,24) with ldk >= 24', &
                          ierr, errmsg)
         return
       end if
-      call check_ints(me, [character(len=15) :: 'size(tangent,1)'], [size(tangent, 1)], ok, &
+      call check_ints(me, [character(len=15) :: 'size(tangent,1)'], [kshape(1)], ok, &
                       ierr, errmsg)
       if (.not. ok) return
-      pk = c_loc(tangent)
-      ldk = int(size(tangent, 1), c_int)
+      pk = tangent
+      ldk = int(kshape(1), c_int)
     end if
-    if (present(end_tangents)) then
-      if (.not. shape_is(shape(end_tangents), [3, 4])) then
-        call finish_size(me, 'end_tangents', shape(end_tangents), [3, 4], ierr, errmsg)
+    if (tshape(1) >= 0) then
+      if (.not. shape_is(tshape, [3, 4])) then
+        call finish_size(me, 'end_tangents', tshape, [3, 4], ierr, errmsg)
         return
       end if
-      pt = c_loc(end_tangents)
+      pt = end_tangents
     end if
     cseg = int(reshape(segments, [6]), c_int)
     cstatus = 0

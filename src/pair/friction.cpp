@@ -13,6 +13,13 @@ using curve::cross3;
 using curve::dot3;
 using curve::norm3;
 
+namespace {
+// The tangent the frame is built from (FrictionResult::frame_source).
+const double* frame_tangent(const FrictionResult& fr, const FrictionContact& c) {
+  return fr.frame_source == kFrameA ? c.ta : (fr.frame_source == kFrameB ? c.tb : fr.axis);
+}
+}  // namespace
+
 FrictionResult friction_force(const Params& p, const FrictionContact& c, const double* hist_old) {
   FrictionResult fr;
   fr.state = B2B_FRICTION_STICK;
@@ -25,11 +32,33 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
     // with n x e1 was then no orthonormal frame of the tangent plane: the
     // committed force came back changed where nothing had moved, with a
     // normal part (found by check_pair_ends, committed_friction_force_is_kept).
-    // e1 is the free beam's tangent, projected onto the tangent plane (the
-    // projection only removes rounding there; with both held, A's).
+    // e1 is the free beam's tangent projected onto the tangent plane (the
+    // projection only removes rounding there). Node to node, the tangent of
+    // A or B less aligned with n, and where both lie along n within 1e-3
+    // rad (tip to tip) the coordinate axis least aligned with n: a node-to-node
+    // contact has no tangential slip, so its frame only carries a committed
+    // force over, and it must not be 0/0 (NaN in the new history).
     fr.projected = true;
-    fr.frame_on_b = c.end_a && !c.end_b;
-    const double* t = fr.frame_on_b ? c.tb : c.ta;
+    auto rel_proj = [&](const double* t) {
+      const double tn = dot3(c.n, t) / norm3(t);
+      return 1.0 - tn * tn;  // |(I - n n^T) unit(t)|^2
+    };
+    if (!c.end_b) {  // A held, B free
+      fr.frame_source = kFrameB;
+    } else if (!c.end_a) {  // B held, A free
+      fr.frame_source = kFrameA;
+    } else {
+      const double pa = rel_proj(c.ta), pb = rel_proj(c.tb);
+      fr.frame_source = pa >= pb ? kFrameA : kFrameB;
+      if (std::fmax(pa, pb) < 1e-6) {
+        fr.frame_source = kFrameAxis;
+        int k = 0;
+        for (int i = 1; i < 3; ++i)
+          if (std::fabs(c.n[i]) < std::fabs(c.n[k])) k = i;
+        fr.axis[k] = 1.0;
+      }
+    }
+    const double* t = frame_tangent(fr, c);
     const double tn = dot3(c.n, t);
     for (int i = 0; i < 3; ++i) fr.e1[i] = t[i] - tn * c.n[i];
     fr.frame_norm = norm3(fr.e1);
@@ -112,12 +141,14 @@ void add_friction_tangent(const Params& p, const FrictionContact& c, const Frict
     }
     // de1 = (I - e1 e1^T) d(x_A,xi) / |x_A,xi|, d(x_A,xi) = P_A,xi + x_A,xixi dxi
     double dta[3], de1[3], de2[3], t1[3], t2[3];
-    if (fr.frame_on_b)  // d(x_B,eta) = P_B,eta + x_B,etaeta deta
+    if (fr.frame_source == kFrameB)  // d(x_B,eta) = P_B,eta + x_B,etaeta deta
       for (int i = 0; i < 3; ++i) dta[i] = (on_a ? 0.0 : PBd[3 * cc + i]) + c.tbd[i] * deta[k];
-    else
+    else if (fr.frame_source == kFrameA)
       for (int i = 0; i < 3; ++i) dta[i] = (on_a ? PAd[3 * cc + i] : 0.0) + c.tad[i] * dxi[k];
+    else  // a constant axis
+      for (int i = 0; i < 3; ++i) dta[i] = 0.0;
     if (fr.projected) {  // p = (I - n n^T) t: dp = (I - n n^T) dt - (n.t) dn - n (dn.t)
-      const double* t = fr.frame_on_b ? c.tb : c.ta;
+      const double* t = frame_tangent(fr, c);
       const double tn = dot3(n, t), ndt = dot3(n, dta), dnt = dot3(dn, t);
       for (int i = 0; i < 3; ++i) dta[i] -= ndt * n[i] + tn * dn[i] + dnt * n[i];
     }

@@ -29,6 +29,8 @@ struct FrictionContact {
   int end_a = 0, end_b = 0;
 };
 
+enum FrameSource { kFrameA = 0, kFrameB = 1, kFrameAxis = 2 };
+
 struct FrictionResult {
   bool anchored = false;  // the committed step was in contact (else T = 0: stick from here)
   int state = 0;          // B2B_FRICTION_STICK or _SLIP
@@ -38,9 +40,12 @@ struct FrictionResult {
   double force_e1 = 0.0, force_e2 = 0.0;  // T in the current frame: the new history
   // kept for the tangent
   double e1[3] = {0, 0, 0}, e2[3] = {0, 0, 0}, speed_a = 0.0;
-  // the frame's tangent: x_B,eta for an end contact with A held and B free,
-  // else x_A,xi; projected onto the tangent plane for an end contact
-  bool frame_on_b = false, projected = false;
+  // the frame's tangent t (friction.cpp): x_A,xi (kFrameA), x_B,eta
+  // (kFrameB) or a constant axis (kFrameAxis, node to node along the axes);
+  // projected onto the tangent plane for an end contact
+  int frame_source = 0;
+  bool projected = false;
+  double axis[3] = {0, 0, 0};
   double frame_norm = 0.0;  // |(I - n n^T) t| (speed_a where not projected)
   double committed_e1 = 0.0, committed_e2 = 0.0;  // committed force in the frame
   double xi_n = 0.0, eta_n = 0.0;
