@@ -151,10 +151,12 @@
  *     and rebuilt in the current frame, so it stays in the tangent plane,
  *     keeps its magnitude and turns with the beams (objective). In an end
  *     contact (b2b_pair_eval_ends) a held parameter's tangent is not normal
- *     to n: e1 is then the free beam's tangent projected onto the tangent
- *     plane, (I - n n^T) t / |(I - n n^T) t|; node to node, that of A or B
- *     at the larger angle to n (the coordinate axis least aligned with n
- *     where both lie within 1e-3 rad of it, tip to tip). A node-to-node
+ *     to n: e1 is then A's tangent projected onto the tangent plane,
+ *     (I - n n^T) t / |(I - n n^T) t| (so a force handed over from a free
+ *     pair keeps its direction), or B's where A's lies within about 6
+ *     degrees of n (sin^2 below 1e-2: a tip pushed on end-on) and B's is
+ *     farther from it, or the coordinate axis least aligned with n where
+ *     both lie within 1e-3 rad of it (tip to tip). A node-to-node
  *     contact has no slip (both anchors are the nodes): its frame only
  *     carries a committed force over.
  *   Return mapping: T_trial = T_n + eps_T g_T; stick if |T_trial| <= mu f_N

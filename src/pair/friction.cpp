@@ -14,6 +14,10 @@ using curve::dot3;
 using curve::norm3;
 
 namespace {
+// An end contact's frame follows A's tangent unless that lies within this
+// sin^2 of n (about 6 degrees; b2b_pair.h, Transport).
+constexpr double kFrameMinSin2 = 1e-2;
+
 // The tangent the frame is built from (FrictionResult::frame_source).
 const double* frame_tangent(const FrictionResult& fr, const FrictionContact& c) {
   return fr.frame_source == kFrameA ? c.ta : (fr.frame_source == kFrameB ? c.tb : fr.axis);
@@ -32,24 +36,25 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
     // with n x e1 was then no orthonormal frame of the tangent plane: the
     // committed force came back changed where nothing had moved, with a
     // normal part (found by check_pair_ends, committed_friction_force_is_kept).
-    // e1 is the free beam's tangent projected onto the tangent plane (the
-    // projection only removes rounding there). Node to node, the tangent of
-    // A or B less aligned with n, and where both lie along n within 1e-3
-    // rad (tip to tip) the coordinate axis least aligned with n: a node-to-node
-    // contact has no tangential slip, so its frame only carries a committed
-    // force over, and it must not be 0/0 (NaN in the new history).
+    // e1 is A's tangent projected onto the tangent plane, as in the free
+    // element (where the projection only removes rounding), so that a
+    // committed force handed from a free pair to an end contact keeps its
+    // direction (B's tangent turned it by the crossing angle). Where A's
+    // tangent lies within about 6 degrees of n (a tip pushed on end-on,
+    // sin^2 below 1e-2) B's; where both lie within 1e-3 rad of n (tip to
+    // tip) the coordinate axis least aligned with n: a node-to-node contact
+    // has no tangential slip, so its frame only carries a committed force
+    // over, and it must not be 0/0 (NaN in the new history).
     fr.projected = true;
     auto rel_proj = [&](const double* t) {
       const double tn = dot3(c.n, t) / norm3(t);
       return 1.0 - tn * tn;  // |(I - n n^T) unit(t)|^2
     };
-    if (!c.end_b) {  // A held, B free
-      fr.frame_source = kFrameB;
-    } else if (!c.end_a) {  // B held, A free
-      fr.frame_source = kFrameA;
-    } else {
-      const double pa = rel_proj(c.ta), pb = rel_proj(c.tb);
-      fr.frame_source = pa >= pb ? kFrameA : kFrameB;
+    const double pa = rel_proj(c.ta);
+    fr.frame_source = kFrameA;
+    if (pa < kFrameMinSin2) {
+      const double pb = rel_proj(c.tb);
+      fr.frame_source = pb >= pa ? kFrameB : kFrameA;
       if (std::fmax(pa, pb) < 1e-6) {
         fr.frame_source = kFrameAxis;
         int k = 0;

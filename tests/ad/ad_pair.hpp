@@ -865,16 +865,17 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
       const S speed = norm3(a);
       for (int i = 0; i < 3; ++i) e1[i] = a[i] / speed;
     } else {
-      // an end contact: the free beam's tangent in the tangent plane,
-      // (I - n n^T) t / |(I - n n^T) t| (b2b_pair.h, Transport); node to
-      // node the one of a, b with the larger sin^2 of its angle to n, or,
-      // both below 1e-6, the unit axis of the smallest |n_i| (the first)
+      // an end contact: A's tangent in the tangent plane,
+      // (I - n n^T) t / |(I - n n^T) t| (b2b_pair.h, Transport), unless its
+      // sin^2 to n is below 1e-2: then B's if that is larger, and where
+      // both are below 1e-6 the unit axis of the smallest |n_i| (the first)
       S axis[3] = {0.0, 0.0, 0.0};
-      const S* t = (ha && !hb) ? b : a;
-      if (ha && hb) {
-        const double ca = dval(dot3(n, a)) / dval(norm3(a)), cb = dval(dot3(n, b)) / dval(norm3(b));
-        const double sa = 1.0 - ca * ca, sb = 1.0 - cb * cb;
-        t = sa >= sb ? a : b;
+      const S* t = a;
+      const double ca = dval(dot3(n, a)) / dval(norm3(a));
+      const double sa = 1.0 - ca * ca;
+      if (sa < 1e-2) {
+        const double cb = dval(dot3(n, b)) / dval(norm3(b)), sb = 1.0 - cb * cb;
+        if (sb >= sa) t = b;
         if (std::fmax(sa, sb) < 1e-6) {
           int k = 0;
           for (int i = 1; i < 3; ++i)
