@@ -172,7 +172,7 @@ class Model {
   // search and distances and only looks up what the last update recorded ---
   const std::vector<double>& current_coords() const { return current_coords_; }
   const std::vector<double>& committed_coords() const { return committed_coords_; }
-  const std::vector<int>& used_index() const { return used_index_; }
+  const NodeIndex& used_index() const { return used_index_; }
   const std::vector<std::pair<int, int>>& candidates() const { return candidates_; }
 };
 
