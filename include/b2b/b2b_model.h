@@ -231,7 +231,9 @@ enum {
   B2B_COUNT_HANDOVERS = 10,     /* handover hops in the last update */
   B2B_COUNT_LOST = 11,          /* committed contacts not found again (beam end, hops) */
   B2B_COUNT_STICK = 12,         /* active contacts sticking */
-  B2B_COUNT_SLIP = 13           /* active contacts slipping */
+  B2B_COUNT_SLIP = 13,          /* active contacts slipping */
+  B2B_COUNT_CROSSED = 14        /* active contacts whose axes passed through each other
+                                   (gap below -(r_A + r_B)): cut back (see Update) */
 };
 #define B2B_MODEL_COUNTS_LEN 16
 

@@ -230,6 +230,10 @@ struct RestartCodec {
     // Accepted: replace the committed state; the rest starts afresh.
     m.committed_ = std::move(st);
     m.committed_coords_ = std::move(coords);
+    // The search's boxes are swept from the committed coordinates
+    // (crossing.hpp): search again.
+    m.candidates_.clear();
+    m.build_coords_.clear();
     m.arcs_committed_ = !lo.empty();
     m.table_.set_arcs(std::move(lo), std::move(hi), std::move(arc_total));
     m.trial_ = ContactState();

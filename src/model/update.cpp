@@ -25,6 +25,7 @@
 #include "../pair/handover.hpp"
 #include "../pair/history.hpp"
 #include "../pair/laws.hpp"
+#include "crossing.hpp"
 #include "end_contact.hpp"
 #include "model.hpp"
 #include "segment_geometry.hpp"
@@ -72,6 +73,12 @@ class Updater {
   bool want_tangent_;
   std::vector<double> cur_;
   std::vector<Box> boxes_;
+  // Since the last commit (crossing.hpp): committed boxes and motion, and
+  // each segment's box swept from its committed to its current position.
+  bool has_committed_ = false;
+  CommittedMotion motion_;
+  std::vector<Box> swept_;
+  std::vector<double> synthetic_;         // committed normals of crossed pairs, as histories
   std::vector<std::pair<int, int>> new_candidates_;
   bool rebuilt_ = false;
   std::vector<int> slot_;                 // segment -> index into built_ (-1: not built)
@@ -81,6 +88,7 @@ class Updater {
   std::vector<double> tangents_;
   std::vector<double> fresh_;             // zeros: a fresh history
   int hops_ = 0, lost_ = 0, near_ = 0;
+  const std::vector<Box>& search_boxes() const { return has_committed_ ? swept_ : boxes_; }
 
   int nt() const {
 #ifdef B2B_HAVE_OPENMP
@@ -104,6 +112,7 @@ class Updater {
   SegmentEnds ends_of(int s) const;
   void evaluate(Item& item, double* K) const;
   Problem evaluate_all();
+  Problem crossed_pairs();
   Problem handovers();
   Problem overflow(const Item& item) const;
   Problem totals_overflow() const;
@@ -129,6 +138,7 @@ Problem Updater::run() {
       pb = build_segments();
     }
     if (!pb.status) pb = evaluate_all();
+    if (!pb.status) pb = crossed_pairs();
     if (!pb.status) pb = handovers();
     if (!pb.status) pb = totals_overflow();
   } catch (const CandidateLimit&) {
@@ -173,6 +183,17 @@ Problem Updater::gather() {
   boxes_.resize(n);
   for (int s = 0; s < n; ++s)
     boxes_[s] = segment_box(m_.table_.segment(s), cur_.data(), m_.used_index_);
+  has_committed_ = !m_.committed_coords_.empty();
+  if (has_committed_) {
+    committed_motion(m_.table_, cur_.data(), m_.committed_coords_.data(), m_.used_index_,
+                     motion_);
+    swept_ = boxes_;
+    for (int s = 0; s < n; ++s)
+      for (int i = 0; i < 3; ++i) {
+        swept_[s].lo[i] = std::min(swept_[s].lo[i], motion_.boxes[s].lo[i]);
+        swept_[s].hi[i] = std::max(swept_[s].hi[i], motion_.boxes[s].hi[i]);
+      }
+  }
   return pb;
 }
 
@@ -192,13 +213,14 @@ void Updater::broad_phase() {
   if (!rebuild) return;
   rebuilt_ = true;
   const int n = static_cast<int>(boxes_.size());
+  const std::vector<Box>& swept = search_boxes();
   std::vector<Box>& grown = m_.search_boxes_;
   grown.resize(n);
   for (int k = 0; k < n; ++k) {
     const double g = m_.table_.segment(k).radius + 0.5 * m_.g0_max_ + 4.0 * s / 3.0;
     for (int i = 0; i < 3; ++i) {
-      grown[k].lo[i] = boxes_[k].lo[i] - g;
-      grown[k].hi[i] = boxes_[k].hi[i] + g;
+      grown[k].lo[i] = swept[k].lo[i] - g;
+      grown[k].hi[i] = swept[k].hi[i] + g;
     }
   }
   m_.tree_.build(grown);
@@ -227,7 +249,9 @@ void Updater::near_pairs() {
     const double g0 = pair::contact_start_gap(p);
     const double reach = m_.table_.segment(c.first).radius + m_.table_.segment(c.second).radius +
                          g0 + s;
-    if (box_distance(boxes_[c.first], boxes_[c.second]) > reach) continue;
+    // Swept boxes once there is a commit: a pair that met anywhere between
+    // its committed and its current position is evaluated (crossing.hpp).
+    if (box_distance(search_boxes()[c.first], search_boxes()[c.second]) > reach) continue;
     ++near_;
     Item it;
     it.key = pair_key(c.first, c.second);
@@ -438,6 +462,45 @@ Problem Updater::evaluate_all() {
   return Problem();
 }
 
+// A pair without a committed history that has moved far enough to have
+// passed through the other beam since the commit is checked against the
+// normal of its committed closest points; on the other side now, it is
+// evaluated with that normal as its history, which gives it its signed gap
+// (crossing.hpp). In item order after the parallel evaluation, so the
+// tangents' layout does not depend on the threads.
+Problem Updater::crossed_pairs() {
+  if (!has_committed_) return Problem();
+  synthetic_.assign(pair::kHistoryLengthMax * items_.size(), 0.0);
+  for (size_t k = 0; k < items_.size(); ++k) {
+    Item& it = items_[k];
+    const int st = it.res.contact_status;
+    if (it.hist_old || (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN)) continue;
+    double d[3];
+    for (int i = 0; i < 3; ++i)
+      d[i] = it.res.info[B2B_INFO_POINT_A + i] - it.res.info[B2B_INFO_POINT_B + i];
+    if (!may_have_crossed(motion_, it.a, it.b, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
+      continue;
+    const GroupPair& gp = m_.group_pairs_[it.gp];
+    double* h = synthetic_.data() + pair::kHistoryLengthMax * k;
+    if (!committed_history(m_.table_.segment(it.a), m_.table_.segment(it.b),
+                           m_.committed_coords_.data(), m_.used_index_,
+                           gp.params.max_iterations, h, gp.hist_len))
+      continue;
+    const double* nc = h + pair::kHistNormal;
+    if (d[0] * nc[0] + d[1] * nc[1] + d[2] * nc[2] >= 0.0) continue;  // same side
+    it.hist_old = h;
+    double K[pair::kNdof * pair::kNdof];
+    evaluate(it, want_tangent_ ? K : nullptr);
+    it.tangent = -1;
+    if (want_tangent_ && it.res.contact_status == B2B_CONTACT_ACTIVE) {
+      it.tangent = static_cast<int64_t>(tangents_.size());
+      tangents_.insert(tangents_.end(), K, K + pair::kNdof * pair::kNdof);
+    }
+    if (it.res.overflow) return overflow(it);
+  }
+  return Problem();
+}
+
 Problem Updater::handovers() {
   const ContactState& committed = m_.committed_;
   std::vector<uint64_t> claimed;  // targets a handover has taken in this update
@@ -537,7 +600,13 @@ void Updater::finish() {
     const pair::PairResult& r = it.res;
     const int st = r.contact_status;
     switch (st) {
-      case B2B_CONTACT_ACTIVE: ++counts[B2B_COUNT_ACTIVE]; break;
+      case B2B_CONTACT_ACTIVE:
+        ++counts[B2B_COUNT_ACTIVE];
+        // The axes passed through each other (signed gap below -(r_A + r_B)).
+        if (r.info[B2B_INFO_GAP] <
+            -(m.table_.segment(it.a).radius + m.table_.segment(it.b).radius))
+          ++counts[B2B_COUNT_CROSSED];
+        break;
       case B2B_CONTACT_OPEN: ++counts[B2B_COUNT_OPEN]; break;
       case B2B_CONTACT_OUTSIDE: ++counts[B2B_COUNT_OUTSIDE]; break;
       case B2B_CONTACT_PARALLEL: ++counts[B2B_COUNT_PARALLEL]; break;
