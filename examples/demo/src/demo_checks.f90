@@ -32,6 +32,10 @@
 !>                       the contact forces on beam_a balance its load along
 !>                       the load (1e-6); at least min_nodes_crossed handover
 !>                       hops in the run (the contacts slide across nodes).
+!>  reference            the monitored node's final displacement |u| within
+!>                       tolerance (relative) of reference, a value measured by
+!>                       the same scene in many more steps (the scene says
+!>                       which): large steps must give the answer of small ones.
 !>  capstan              beam_a (the rope) led over pegs, its first node
 !>                       loaded (the held tension T_in), its last node pulled
 !>                       by a prescribed motion: in every step where all
@@ -67,6 +71,7 @@ module demo_checks
   integer, save :: first_slip_step = 0
   real(dp), save :: ratio_formula = 0.0_dp, turn_total = 0.0_dp, ratio_first = 0.0_dp, ratio_last = 0.0_dp
   real(dp), save :: t_in_last = 0.0_dp
+  real(dp), save :: u_last = 0.0_dp  !< |u| of the monitored node at the last step (reference)
   integer, save :: audit_found = 0
 
 contains
@@ -196,6 +201,7 @@ contains
     audit_found = snap%audit_found
     if (len_trim(m%check%kind) == 0) return
     total_cut = total_cut + row%cutbacks
+    u_last = norm2(row%u)
     min_active = min(min_active, snap%n)
     f_model = 0.0_dp
     do k = 1, snap%n
@@ -374,6 +380,12 @@ contains
       if (n_stick == 0) call fail('no stick step seen')
       if (n_slip_pos < 2 .or. n_slip_neg < 2) call fail('fewer than two slip steps in one direction: no plateau' &
                                                         // ' or no reversal')
+    case ('reference')
+      write (*, '(a,es13.6,a,es13.6,a,es9.2,a,i0)') trim(m%name) // ': check reference: final |u| ', u_last, &
+        ', reference ', m%check%reference, ', rel. error ', abs(u_last - m%check%reference) / m%check%reference, &
+        ', cut-backs ', total_cut
+      if (abs(u_last - m%check%reference) > m%check%tolerance * m%check%reference) &
+        call fail('final displacement off the reference by more than the tolerance')
     case ('many_contacts')
       write (*, '(a,i0,a,i0,a,es9.2)') trim(m%name) // ': check many_contacts: fewest active contacts ', min_active, &
         ', handover hops ', total_hops, ', worst balance error ', worst

@@ -38,7 +38,7 @@ module demo_contact_hook
                  b2b_model_add_tangent_banded, b2b_model_add_tangent_dense, b2b_model_commit, &
                  b2b_model_revert, b2b_model_stats, b2b_model_destroy, b2b_model_audit, &
                  B2B_AUDIT_OTHER, B2B_AUDIT_PARALLEL, B2B_AUDIT_OUTSIDE_BOTH, B2B_AUDIT_NEVER_EVALUATED, &
-                 B2B_AUDIT_EXCLUDED_SELF, B2B_AUDIT_CROSSED, &
+                 B2B_AUDIT_EXCLUDED_SELF, B2B_AUDIT_CROSSED, B2B_IX_COUNT_CROSSED, &
                  B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL, &
                  B2B_CURVE_HERMITE_NODAL_WEIGHTED, B2B_LAW_LINEAR, B2B_LAW_QUADRATIC, B2B_ERR_RANGE, &
                  B2B_TANGENT_EXACT, B2B_TANGENT_SYMMETRIC, B2B_TANGENT_MAIN, B2B_TANGENT_FD
@@ -47,7 +47,7 @@ module demo_contact_hook
   private
   public :: contact_hook_init, contact_hook_forces, contact_hook_commit, contact_hook_revert
   public :: contact_hook_failed, contact_hook_signature, contact_hook_snapshot, contact_hook_finish
-  public :: contact_hook_audit
+  public :: contact_hook_audit, contact_hook_crossed
 
   !> Overlaps below this fraction of the smaller radius are not reported by the audit.
   real(dp), parameter, public :: audit_tolerance = 0.01_dp
@@ -178,6 +178,14 @@ contains
     call b2b_params_destroy(params)
     call b2b_model_finalize(model, m%n_nodes, ierr, msg)
     call check(ierr, msg, 'finalize')
+    ! The initial configuration is the first converged state: committed, it
+    ! is what the model checks the first step against for beams that pass
+    ! through each other (B2B_COUNT_CROSSED), and where contacts of the
+    ! initial configuration anchor their friction.
+    call b2b_model_update(model, m%x, .false., ierr, msg)
+    call check(ierr, msg, 'update (initial configuration)')
+    call b2b_model_commit(model, ierr, msg)
+    call check(ierr, msg, 'commit (initial configuration)')
     if (allocated(eq_all)) deallocate (eq_all)
     allocate (eq_all(ndf, m%n_nodes))
     eq_all = reshape([(i, i = 1, ndf * m%n_nodes)], [ndf, m%n_nodes])
@@ -274,6 +282,15 @@ contains
     if (debug .and. n > 0) write (*, '(a,4i4,6es12.4)') '      [c1]', last%c(1)%pair, last%c(1)%info(1:2), &
       last%c(1)%info(12:13), last%c(1)%info(3:5:2)
   end subroutine refresh
+
+  !> Pairs of beams whose axes lie through each other in the last update
+  !> (B2B_COUNT_CROSSED). Within the iterations the signed gap pushes them
+  !> back; a converged state that still has one is cut back (solver): a
+  !> penalty cannot resolve an axis that went through another beam.
+  integer function contact_hook_crossed() result(n)
+    n = 0
+    if (on .and. updated) n = last%counts(B2B_IX_COUNT_CROSSED)
+  end function contact_hook_crossed
 
   !> .true. (with the model's message) if the last update failed.
   logical function contact_hook_failed(why) result(f)

@@ -27,12 +27,13 @@ module demo_model
 
   !> What the program checks at the end of a run (&check group; kind '' = none).
   type, public :: check_settings
-    character(len=32) :: kind = ''          !< crossed_beams | cantilever_crossbar | sliding | friction_pull | many_contacts | capstan
+    character(len=32) :: kind = ''          !< crossed_beams | cantilever_crossbar | sliding | friction_pull | many_contacts | capstan | reference
     integer :: beam_a = 1, beam_b = 2       !< the loaded (or moving) beam and the other one
     real(dp) :: tolerance = 0.01_dp         !< relative tolerance of the closed form
     real(dp) :: min_rate = 1.8_dp           !< quadratic convergence: least rate where the active set is fixed
     integer :: min_contacts = 1             !< least number of active contacts (many_contacts)
     integer :: min_nodes_crossed = 0        !< nodes of beam_b the contact must cross (sliding)
+    real(dp) :: reference = 0.0_dp          !< final |displacement| of the monitored node (reference)
   end type check_settings
 
   !> Piecewise-linear time function of a load or motion (&load / &motion key ramp).

@@ -28,7 +28,7 @@ module demo_scene_reader
   character(len=*), parameter :: keys_contact = 'curve law penalty regularization_gap friction ' &
                                                 // 'tangential_penalty self_contact pairs tangent'
   character(len=*), parameter :: keys_check = 'kind beam_a beam_b tolerance min_rate min_contacts ' &
-                                              // 'min_nodes_crossed'
+                                              // 'min_nodes_crossed reference'
 
   integer, parameter :: max_pairs = 64
   integer, parameter :: max_poly_points = 64   !< corner points of a 'polyline' beam
@@ -665,19 +665,22 @@ contains
     type(scene_model), intent(inout) :: m
     character(len=32) :: kind
     integer :: beam_a, beam_b, min_contacts, min_nodes_crossed, ios
-    real(dp) :: tolerance, min_rate
+    real(dp) :: tolerance, min_rate, reference
     character(len=256) :: iomsg
-    namelist /check/ kind, beam_a, beam_b, tolerance, min_rate, min_contacts, min_nodes_crossed
+    namelist /check/ kind, beam_a, beam_b, tolerance, min_rate, min_contacts, min_nodes_crossed, reference
     if (idx%count('check') == 0) return
     kind = ''; beam_a = 1; beam_b = 2; tolerance = 0.01_dp; min_rate = 1.8_dp; min_contacts = 1
-    min_nodes_crossed = 0
+    min_nodes_crossed = 0; reference = -1.0_dp
     rewind (u)
     read (u, nml=check, iostat=ios, iomsg=iomsg)
     if (ios /= 0) call read_failed('check', 1, ios, iomsg)
     kind = lower(kind)
-    if (.not. in_list(kind, 'crossed_beams cantilever_crossbar sliding friction_pull many_contacts capstan')) &
+    if (.not. in_list(kind, 'crossed_beams cantilever_crossbar sliding friction_pull many_contacts capstan ' &
+                      // 'reference')) &
       call bad('check', 1, 'kind', '''' // trim(kind) // ''' is not one of crossed_beams, cantilever_crossbar, ' &
-               // 'sliding, friction_pull, many_contacts, capstan')
+               // 'sliding, friction_pull, many_contacts, capstan, reference')
+    if (kind == 'reference' .and. .not. reference > 0.0_dp) &
+      call bad('check', 1, 'reference', 'kind ''reference'' needs reference > 0 (the final displacement)')
     if (.not. m%contact%enabled) call bad('check', 1, 'kind', 'a contact check needs a &contact group')
     if (beam_a < 1 .or. beam_a > m%n_beams) call bad('check', 1, 'beam_a', 'beam ' // str(beam_a) // ' does not exist')
     if (beam_b < 1 .or. beam_b > m%n_beams .or. beam_b == beam_a) call bad('check', 1, 'beam_b', 'beam ' &
@@ -686,6 +689,7 @@ contains
     call positive('check', 1, 'min_rate', min_rate)
     m%check%kind = kind; m%check%beam_a = beam_a; m%check%beam_b = beam_b; m%check%tolerance = tolerance
     m%check%min_rate = min_rate; m%check%min_contacts = min_contacts; m%check%min_nodes_crossed = min_nodes_crossed
+    m%check%reference = reference
   end subroutine read_check
 
   ! ---------------------------------------------------------------- helpers

@@ -28,7 +28,8 @@ module demo_solver
   use demo_linear_system, only: linear_system, sys_setup, sys_solve
   use demo_assembly, only: assemble
   use demo_contact_hook, only: contact_hook_init, contact_hook_commit, contact_hook_revert, contact_hook_failed, &
-                               contact_hook_signature, contact_hook_snapshot, contact_snapshot, contact_hook_audit
+                               contact_hook_signature, contact_hook_snapshot, contact_snapshot, contact_hook_audit, &
+                               contact_hook_crossed
   use demo_history, only: run_history, step_row, iter_row
   use demo_output, only: output_begin, output_step, output_finish, output_contacts
   use demo_checks, only: check_step
@@ -238,6 +239,13 @@ contains
         return
       end if
       if (nrm <= max(m%tol * ref, noise)) then
+        ! Converged, but with beams whose axes passed through each other
+        ! (B2B_COUNT_CROSSED): the step was too large for the contact to
+        ! catch them, cut back.
+        if (contact_hook_crossed() > 0) then
+          why = str(contact_hook_crossed()) // ' pair(s) of beams passed through each other'
+          return
+        end if
         ok = .true.
         return
       end if
