@@ -127,6 +127,21 @@
  *     and on along both beams until a pair owns the point (at most
  *     "max_handover_hops" hops; across a ring's seam too). A pair that held
  *     its own committed contact keeps its own history.
+ *   Crossing since the last commit (tunnelling): once there is a commit,
+ *     each segment's box is swept from its committed to its current
+ *     position (their union) in the broad phase and the near test, and a
+ *     pair without a committed normal whose segments moved since the commit
+ *     by more than its present axis distance is checked against the normal
+ *     of its closest points on the committed geometry: on the other side
+ *     now, it is evaluated with that normal, an active contact with its
+ *     signed gap (pushed back, not pulled through). An active contact whose
+ *     gap is below -(r_A + r_B) (its axes passed through each other) is
+ *     counted in counts[B2B_COUNT_CROSSED]: within Newton's iterations the
+ *     penalty pushes it back; a converged update that still has one is a
+ *     step too large for the contact to be resolved, and the host cuts back
+ *     (b2b_model_revert, a smaller step). Before the first commit there is
+ *     no configuration to check against: a host whose first step moves the
+ *     beams commits the initial configuration first (update, commit).
  *   The active contacts are listed in a fixed order (by pair), the same for
  *   any number of threads, with outputs bit for bit the same.
  * want_tangent = 0 skips the tangents (cheaper); get_contact then has none.
