@@ -236,10 +236,7 @@ static int check_frictionless(const b2b_params *p, const tst_pair_spec *spec, co
   const double f = info[B2B_INFO_NORMAL_FORCE];
   const double ek = tst_rel_diff(K, Kfd, 576, 1e-12 * f);
   const double er = tst_rel_diff(R, Rfd, 24, 1e-12 * f);
-  double asym = 0.0;
-  for (int c = 0; c < 24; ++c)
-    for (int r = 0; r < c; ++r) asym = fmax(asym, fabs(K[r + 24 * c] - K[c + 24 * r]));
-  asym /= fmax(tst_max_abs(K, 576), 1e-300);
+  const double asym = tst_asymmetry(K);
   worst_k = fmax(worst_k, ek);
   worst_r = fmax(worst_r, er);
   worst_sym = fmax(worst_sym, asym);

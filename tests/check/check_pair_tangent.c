@@ -57,10 +57,7 @@ static int check_config(const b2b_params *params, const tst_pair_spec *spec, con
     }
   const double ek = tst_rel_diff(K, Kfd, 576, 1e-12 * f);
   const double er = tst_rel_diff(R, Rfd, 24, 1e-12 * f);
-  double asym = 0.0;
-  for (int c = 0; c < 24; ++c)
-    for (int r = 0; r < c; ++r) asym = fmax(asym, fabs(K[r + 24 * c] - K[c + 24 * r]));
-  asym /= fmax(tst_max_abs(K, 576), 1e-300);
+  const double asym = tst_asymmetry(K);
   worst_tangent = fmax(worst_tangent, ek);
   worst_residual = fmax(worst_residual, er);
   worst_symmetry = fmax(worst_symmetry, asym);

@@ -178,3 +178,10 @@ double tst_tangent_rotation_error(const double Q[9], const double K1[576], const
         }
   return err;
 }
+
+double tst_asymmetry(const double K[576]) {
+  double asym = 0.0;
+  for (int c = 0; c < 24; ++c)
+    for (int r = 0; r < c; ++r) asym = fmax(asym, fabs(K[r + 24 * c] - K[c + 24 * r]));
+  return asym / fmax(tst_max_abs(K, 576), 1e-300);
+}

@@ -41,6 +41,9 @@ int tst_pair_ext(const b2b_params *params, const tst_pair_spec *spec, const doub
 
 /* Largest |K2 - Q K1 Q^T| over the 3x3 node blocks of two 24x24 tangents
  * (column-major): how far K2 is from K1 turned by the rotation Q. */
+/* max |K - K^T| over max |K| of a 24 x 24 tangent (0 for a zero K). */
+double tst_asymmetry(const double K[576]);
+
 double tst_tangent_rotation_error(const double Q[9], const double K1[576], const double K2[576]);
 
 #endif
