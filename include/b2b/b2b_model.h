@@ -93,6 +93,11 @@
  * x[ldx*k + 0..2] (a 3 x n_cols column-major array with leading dimension
  * ldx >= 3, so FEAP's x(ndm, numnp) works as is); n_cols >= n_nodes. Only
  * nodes of beams are read (each must be finite and within B2B_COORD_MAX).
+ *   Elements: before any search, every element of every beam is checked in
+ *     O(n): two consecutive nodes of a beam that coincide (a zero-length
+ *     element, wherever it is) are B2B_ERR_COINCIDENT, naming the beam and
+ *     segment; so a scene with all nodes on one point costs O(n), not the
+ *     O(n^2) search of its pairs.
  *   Broad phase: boxes around each segment (its Hermite control polygon,
  *     which contains the curve) grown by r + g0/2 + 4s/3, in Boost.Geometry's
  *     packed R-tree when b2b was built with the Boost headers, else in b2b's

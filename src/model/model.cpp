@@ -7,6 +7,7 @@
 #include <b2b/b2b.h>
 
 #include "../pair/history.hpp"
+#include "../curve/segment.hpp"
 #include "../pair/laws.hpp"
 
 namespace b2b {
@@ -151,6 +152,42 @@ bool Model::may_pair(int a, int b) const {
   if (!beam.self_contact) return false;
   const double exclusion = beam.exclusion >= 0.0 ? beam.exclusion : 4.0 * beam.radius;
   return table_.arc_gap(beam, a, b) > exclusion;
+}
+
+Problem Model::check_elements(const double* coords) const {
+  Problem pb;
+  for (size_t b = 0; b < beams_.size(); ++b) {
+    const Beam& beam = beams_[b];
+    const int n = static_cast<int>(beam.nodes.size());
+    const int elements = beam.closed ? n : n - 1;
+    for (int k = 0; k < elements; ++k) {
+      const int u = beam.nodes[k], v = beam.nodes[(k + 1) % n];
+      if (!curve::points_coincide(coords + 3 * used_index_[u], coords + 3 * used_index_[v]))
+        continue;
+      pb.status = B2B_ERR_COINCIDENT;
+      pb.what = Problem::What::Segment;
+      pb.beam = static_cast<int>(b);
+      // the first segment whose patch holds the element (slots j, j + 1)
+      for (int s = 0; s < beam.n_segments && pb.slot_a < 0; ++s) {
+        const SegmentInfo& info = table_.segment(beam.first_segment + s);
+        for (int j = 0; j < 3; ++j)
+          if ((info.nodes[j] == u && info.nodes[j + 1] == v) ||
+              (info.nodes[j] == v && info.nodes[j + 1] == u)) {
+            pb.segment = s;
+            pb.slot_a = j;
+            pb.slot_b = j + 1;
+            break;
+          }
+      }
+      if (pb.slot_a < 0) {  // (every element is in some patch)
+        pb.segment = 0;
+        pb.slot_a = 1;
+        pb.slot_b = 2;
+      }
+      return pb;
+    }
+  }
+  return pb;
 }
 
 bool Model::may_pair_with_arcs(int a, int b, const std::vector<double>& lo,

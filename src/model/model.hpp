@@ -161,6 +161,9 @@ class Model {
     build_coords_.clear();
   }
   bool may_pair(int a, int b) const;
+  // The O(n) check before the search: B2B_ERR_COINCIDENT for the first
+  // element of a beam whose two nodes coincide in coords (used nodes).
+  Problem check_elements(const double* coords) const;
   // may_pair with the self-contact arc spans of a restart buffer.
   bool may_pair_with_arcs(int a, int b, const std::vector<double>& lo,
                           const std::vector<double>& hi, const std::vector<double>& total) const;

@@ -11,7 +11,8 @@
  *    finalize(INT_MAX) with one small beam, 10^5 groups;
  *  - memory: an update that runs out of memory inside the broad phase's
  *    parallel region (address-space limit) is B2B_ERR_NOMEM with the model
- *    unchanged; the "max_candidates" bound;
+ *    unchanged; the "max_candidates" bound; all nodes on one point refused
+ *    in O(n) before the search;
  *  - the "threads" range message; stats after revert and restore;
  *  - every option changed between updates acts as if set from the start;
  *    reverting the very first update forgets the self-contact arc lengths
@@ -594,6 +595,29 @@ START_TEST(candidate_bound) {
 }
 END_TEST
 
+START_TEST(all_nodes_on_one_point) {
+  /* finding 5: with every node on one point the O(n^2) search ran before
+   * the O(n) coincident-node check. 20,000 beams: 2e8 pairs to search
+   * before; now B2B_ERR_COINCIDENT at once, naming the first element. */
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_params *p;
+  double *x;
+  b2b_model *m = stack_model(20000, &x, &p);
+  ok(b2b_model_set_int(m, "max_candidates", INT_MAX, msg, sizeof msg), msg);
+  for (int k = 0; k < 6 * 20000; ++k) x[k] = 0.25;
+  const double t0 = cpu_seconds();
+  const int st = b2b_model_update(m, x, 3, 40000, 0, msg, sizeof msg);
+  const double t = cpu_seconds() - t0;
+  ck_assert_msg(st == B2B_ERR_COINCIDENT, "all nodes on one point: status %d (%s)", st, msg);
+  ck_assert_msg(strstr(msg, "beam 0, segment 0: nodes 0 and 1 coincide") != NULL, "%s", msg);
+  ck_assert_msg(t < 0.5, "the refusal took %.2f s of CPU time", t);
+  printf("check_model_hostile: all nodes on one point: %s (%.3f s)\n", msg, t);
+  free(x);
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 /* ------------------------------------------------------ messages and stats */
 
 START_TEST(threads_message) {
@@ -759,6 +783,7 @@ int main(void) {
   tcase_add_test(sizes, many_groups);
   tcase_add_test(sizes, out_of_memory_in_the_broad_phase);
   tcase_add_test(sizes, candidate_bound);
+  tcase_add_test(sizes, all_nodes_on_one_point);
   suite_add_tcase(s, sizes);
   return tst_run_suite(s);
 }
