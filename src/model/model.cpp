@@ -144,14 +144,7 @@ double Model::effective_margin() const {
 
 // Whether segments a and b may ever be in contact (before any geometry).
 bool Model::may_pair(int a, int b) const {
-  if (group_pair_index(a, b) < 0) return false;
-  if (table_.share_node(a, b)) return false;
-  const SegmentInfo &sa = table_.segment(a), &sb = table_.segment(b);
-  if (sa.beam != sb.beam) return true;
-  const Beam& beam = beams_[sa.beam];
-  if (!beam.self_contact) return false;
-  const double exclusion = beam.exclusion >= 0.0 ? beam.exclusion : 4.0 * beam.radius;
-  return table_.arc_gap(beam, a, b) > exclusion;
+  return may_pair_with_arcs(a, b, table_.arc_lo(), table_.arc_hi(), table_.arc_total());
 }
 
 Problem Model::check_elements(const double* coords) const {
@@ -190,6 +183,7 @@ Problem Model::check_elements(const double* coords) const {
   return pb;
 }
 
+// The same with given arc spans (without them, no two segments of one beam).
 bool Model::may_pair_with_arcs(int a, int b, const std::vector<double>& lo,
                                const std::vector<double>& hi,
                                const std::vector<double>& total) const {
