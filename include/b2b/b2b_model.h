@@ -194,7 +194,8 @@
  * then unchanged), B2B_ERR_NONFINITE (radius, coordinates, option values),
  * B2B_ERR_SIZE (a beam of too few nodes, ldx < 3, n_cols < n_nodes, ldeq < 3,
  * ldk, ldab, capacity, a replacement parameter set of another history
- * length, a restore size < 0, more broad-phase pairs than
+ * length, a restore size < 0, more than 2^29 segments at finalize, more
+ * broad-phase pairs than
  * "max_candidates"), B2B_ERR_NOMEM (memory exhausted, in any thread), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a
  * segment's B2B_ERR_COINCIDENT / B2B_ERR_FOLDED. Messages name the beam,
  * segment, host node or group.

@@ -101,6 +101,9 @@ int report_model_problem(const Reporter& r, const b2b_model* model, const md::Pr
                     "pairs of segments that may touch (nodes on top of each other, or a "
                     "search margin far too large?); raise the bound with b2b_model_set_int if "
                     "the scene is meant to be so dense", pb.value);
+    case W::Segments:
+      return r.fail(pb.status, "the model has %.0f segments, more than the %lld b2b handles in "
+                    "one model", pb.value, static_cast<long long>(md::kMaxSegments));
     case W::Band:
       return r.fail(pb.status, "a contact couples equations %d and %d, outside the band (kl, "
                     "ku): widen the band", pb.row, pb.col);

@@ -8,6 +8,7 @@
 
 #include "../pair/history.hpp"
 #include "../curve/segment.hpp"
+#include "../curve/topology.hpp"
 #include "../pair/laws.hpp"
 
 namespace b2b {
@@ -82,6 +83,15 @@ Problem Model::finalize(int n_nodes) {
       return pb;
     }
   }
+  int64_t n_segments = 0;  // in 64 bits: beams * nodes may exceed int
+  for (const Beam& b : beams_)
+    n_segments += curve::segment_count(b.kind, static_cast<int>(b.nodes.size()), b.closed);
+  if (n_segments > kMaxSegments) {
+    pb.status = B2B_ERR_SIZE;
+    pb.what = Problem::What::Segments;
+    pb.value = static_cast<double>(n_segments);
+    return pb;
+  }
   // Everything is built in locals first: an allocation failure leaves the
   // model unfinalized and as it was.
   // Dense group numbers and the group pairs between groups that have beams,
@@ -155,7 +165,7 @@ Problem Model::check_elements(const double* coords) const {
     const int elements = beam.closed ? n : n - 1;
     for (int k = 0; k < elements; ++k) {
       const int u = beam.nodes[k], v = beam.nodes[(k + 1) % n];
-      if (!curve::points_coincide(coords + 3 * used_index_[u], coords + 3 * used_index_[v]))
+      if (!curve::points_coincide(coords + used_index_.offset(u), coords + used_index_.offset(v)))
         continue;
       pb.status = B2B_ERR_COINCIDENT;
       pb.what = Problem::What::Segment;
