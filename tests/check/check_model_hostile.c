@@ -546,8 +546,7 @@ START_TEST(out_of_memory_in_the_broad_phase) {
   char msg[B2B_ERRMSG_LEN] = "";
   b2b_params *p;
   double *x;
-  b2b_model *m = stack_model(20000, &x, &p);
-  ok(b2b_model_set_int(m, "max_candidates", INT_MAX, msg, sizeof msg), msg);
+  b2b_model *m = stack_model(20000, &x, &p);  /* default bound 1e8: memory runs out first */
   ok(b2b_model_set_int(m, "threads", 2, msg, sizeof msg), msg);
   ck_assert(limit_memory(96));
   const int st = b2b_model_update(m, x, 3, 40000, 0, msg, sizeof msg);
@@ -556,6 +555,57 @@ START_TEST(out_of_memory_in_the_broad_phase) {
   ck_assert_int_eq(b2b_model_contact_count(m, &n, NULL, 0), B2B_ERR_STATE);
   ck_assert_int_eq(b2b_model_stats(m, NULL, NULL, NULL, 0), B2B_ERR_STATE);
   printf("check_model_hostile: %s\n", msg);
+  free(x);
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
+START_TEST(out_of_memory_in_the_narrow_phase) {
+  /* finding 5, the parallel narrow phase: a grid of 320 x 320 crossing
+   * beams (2-node, one segment each), every crossing active: 102,400
+   * tangents of 4.6 kB each are kept in the parallel region of the
+   * evaluation, under a limit of 250 MB more than the process holds. */
+  if (UNDER_ASAN) {
+    printf("check_model_hostile: out_of_memory_in_the_narrow_phase skipped under ASan\n");
+    return;
+  }
+  enum { N = 320 };
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  b2b_model *m = NULL;
+  ok(b2b_model_create(&m, msg, sizeof msg), msg);
+  double *x = malloc(12 * (size_t)N * sizeof(double));
+  const double d = 0.5, len = N * d + 1.0;
+  for (int b = 0; b < 2 * N; ++b) {
+    int nodes[2] = {2 * b, 2 * b + 1}, beam;
+    ok(b2b_model_add_beam(m, nodes, 2, 0, 0.1, B2B_CURVE_LINEAR, b < N ? 0 : 1, &beam, msg,
+                          sizeof msg), msg);
+    double *q = x + 6 * (size_t)b;
+    const int i = b % N;
+    if (b < N) { /* along x at y = i d */
+      q[0] = -1; q[1] = i * d; q[2] = 0; q[3] = len; q[4] = i * d; q[5] = 0;
+    } else { /* along y at x = (i + 1/2) d, 0.15 above */
+      q[0] = (i + 0.5) * d; q[1] = -1; q[2] = 0.15;
+      q[3] = (i + 0.5) * d; q[4] = len; q[5] = 0.15;
+    }
+  }
+  ok(b2b_model_set_group_pair(m, 0, 1, p, msg, sizeof msg), msg);
+  ok(b2b_model_finalize(m, 4 * N, msg, sizeof msg), msg);
+  ok(b2b_model_set_int(m, "threads", 2, msg, sizeof msg), msg);
+  ck_assert(limit_memory(250));
+  const int st = b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg);
+  ck_assert_msg(st == B2B_ERR_NOMEM, "update under a memory limit: status %d (%s)", st, msg);
+  int n;
+  ck_assert_int_eq(b2b_model_contact_count(m, &n, NULL, 0), B2B_ERR_STATE);
+  printf("check_model_hostile: narrow phase: %s\n", msg);
+  /* the limit lifted, the same update goes through: all N^2 crossings */
+  struct rlimit rl;
+  getrlimit(RLIMIT_AS, &rl);
+  rl.rlim_cur = rl.rlim_max;
+  ck_assert(setrlimit(RLIMIT_AS, &rl) == 0);
+  ok(b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg), msg);
+  ck_assert_int_eq(count_contacts(m), N * N);
   free(x);
   b2b_model_destroy(&m);
   b2b_params_destroy(&p);
@@ -603,7 +653,6 @@ START_TEST(all_nodes_on_one_point) {
   b2b_params *p;
   double *x;
   b2b_model *m = stack_model(20000, &x, &p);
-  ok(b2b_model_set_int(m, "max_candidates", INT_MAX, msg, sizeof msg), msg);
   for (int k = 0; k < 6 * 20000; ++k) x[k] = 0.25;
   const double t0 = cpu_seconds();
   const int st = b2b_model_update(m, x, 3, 40000, 0, msg, sizeof msg);
@@ -782,6 +831,7 @@ int main(void) {
   tcase_add_test(sizes, finalize_int_max_nodes);
   tcase_add_test(sizes, many_groups);
   tcase_add_test(sizes, out_of_memory_in_the_broad_phase);
+  tcase_add_test(sizes, out_of_memory_in_the_narrow_phase);
   tcase_add_test(sizes, candidate_bound);
   tcase_add_test(sizes, all_nodes_on_one_point);
   suite_add_tcase(s, sizes);
