@@ -681,6 +681,29 @@ START_TEST(threads_message) {
 }
 END_TEST
 
+START_TEST(numbers_in_messages_at_int_max) {
+  /* found by fuzz_model_calls: with "message_base" 1 a caller's number of
+   * INT_MAX was shown as INT_MAX + 1 in int (signed overflow, UBSan). */
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_model *m = NULL;
+  ok(b2b_model_create(&m, msg, sizeof msg), msg);
+  ok(b2b_model_set_int(m, "message_base", 1, msg, sizeof msg), msg);
+  int nodes[2] = {INT_MAX, INT_MAX}, beam;
+  EXPECT_FAIL(B2B_ERR_RANGE, "node 2147483648 appears twice", NULL, NULL,
+              b2b_model_add_beam(m, nodes, 2, 0, 0.1, B2B_CURVE_LINEAR, 0, &beam, msg, sizeof msg));
+  EXPECT_FAIL(B2B_ERR_RANGE, "beam 2147483648 does not exist", NULL, NULL,
+              b2b_model_set_self_contact(m, INT_MAX, 1, -1.0, msg, sizeof msg));
+  nodes[0] = 0;
+  ok(b2b_model_add_beam(m, nodes, 2, 0, 0.1, B2B_CURVE_LINEAR, 0, &beam, msg, sizeof msg), msg);
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  ok(b2b_model_set_group_pair(m, 0, 0, p, msg, sizeof msg), msg);
+  EXPECT_FAIL(B2B_ERR_RANGE, "node 2147483648 (position 2", NULL, NULL,
+              b2b_model_finalize(m, 5, msg, sizeof msg));
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 START_TEST(stats_after_revert_and_restore) {
   /* finding 8: stats returned the reverted update's counts with B2B_OK. */
   char msg[B2B_ERRMSG_LEN] = "";
@@ -824,6 +847,7 @@ int main(void) {
   tcase_add_test(state, search_margin_raised_after_an_update);
   tcase_add_test(state, each_option_changed_between_updates);
   tcase_add_test(state, threads_message);
+  tcase_add_test(state, numbers_in_messages_at_int_max);
   suite_add_tcase(s, state);
   TCase *sizes = tcase_create("sizes");
   tcase_add_test(sizes, band_whose_size_overflows_int);
