@@ -260,7 +260,9 @@ B2B_EXPORT int b2b_model_set_real(b2b_model *model, const char *key, double valu
                                   int errmsg_len);
 B2B_EXPORT int b2b_model_set_int(b2b_model *model, const char *key, int value, char *errmsg,
                                  int errmsg_len);
-/* Builds segments, patches and neighbour tables; node numbers must be < n_nodes. */
+/* Builds segments, patches and neighbour tables; node numbers must be < n_nodes.
+ * Memory goes with the beams' nodes, not with n_nodes (a table of n_nodes ints
+ * only while that is at most about 4 times the beams' nodes). */
 B2B_EXPORT int b2b_model_finalize(b2b_model *model, int n_nodes, char *errmsg, int errmsg_len);
 
 B2B_EXPORT int b2b_model_update(b2b_model *model, const double *x, int ldx, int n_cols,
