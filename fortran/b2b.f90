@@ -1336,7 +1336,8 @@ contains
     call finish('b2b_model_set_real', st, buf, ierr, errmsg)
   end subroutine
 
-  !> Sets an integer option of the model ("threads", "max_handover_hops").
+  !> Sets an integer option of the model ("threads", "max_handover_hops",
+  !> "message_base", "max_candidates"; b2b_model.h).
   subroutine b2b_model_set_int(model, key, value, ierr, errmsg)
     type(b2b_model), intent(inout) :: model
     character(len=*), intent(in) :: key

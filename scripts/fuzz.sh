@@ -11,7 +11,10 @@
 #                    (kept between campaigns); then replays that corpus in a
 #                    build for clang's source-based coverage (build-fuzz-cov/)
 #                    and prints per target: executions, time, corpus size and
-#                    the line coverage of the library's sources (src/)
+#                    the line coverage of the library's sources (src/) and of
+#                    the contact model's (src/model/)
+# FUZZ_TARGETS="fuzz_model_restore fuzz_model_calls" scripts/fuzz.sh ...
+# runs only those targets (default: all of them).
 # It first installs the Debian packages it needs if any is missing (with sudo
 # when not run as root), as scripts/quickstart.sh does.
 set -euo pipefail
@@ -44,7 +47,9 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-targets=(fuzz_segment_eval fuzz_pair_eval fuzz_handover fuzz_model_update)
+all_targets=(fuzz_segment_eval fuzz_pair_eval fuzz_handover fuzz_model_update fuzz_model_restore
+  fuzz_model_calls)
+read -r -a targets <<<"${FUZZ_TARGETS:-${all_targets[*]}}"
 jobs=$(nproc)
 # OpenMP off: the model's threads would only make runs less reproducible (a
 # fuzz model stays far below the size at which it starts threads).
@@ -101,7 +106,7 @@ if [ "$mode" = long ] && ((${#failed[@]} == 0)); then
   prof=build-fuzz-cov/profiles
   rm -rf "$prof"
   mkdir -p "$prof"
-  declare -A lines corpus_size
+  declare -A lines model_lines corpus_size
   # llvm-cov's TOTAL row: regions (3 columns), functions (3), lines: count,
   # missed, percentage; then branches (3).
   total='/^TOTAL/ {printf "%d of %d lines (%s); branches %d of %d (%s)", $8 - $9, $8, $10, $11 - $12, $11, $13}'
@@ -113,6 +118,8 @@ if [ "$mode" = long ] && ((${#failed[@]} == 0)); then
     "$profdata" merge -sparse "$prof/$t"-*.profraw -o "$prof/$t.profdata"
     lines[$t]=$("$cov" report build-fuzz-cov/src/libb2b.so -instr-profile="$prof/$t.profdata" \
       "$PWD/src" | awk "$total")
+    model_lines[$t]=$("$cov" report build-fuzz-cov/src/libb2b.so -instr-profile="$prof/$t.profdata" \
+      "$PWD/src/model" | awk "$total")
     corpus_size[$t]=$(find "build-fuzz/corpus/long/$t" "tests/fuzz/corpus/$t" -type f | wc -l)
   done
   "$profdata" merge -sparse "$prof"/*.profraw -o "$prof/all.profdata"
@@ -120,14 +127,16 @@ if [ "$mode" = long ] && ((${#failed[@]} == 0)); then
     awk "$total")
   echo
   echo "fuzz: long campaign on $(date -u +%Y-%m-%d), $(nproc) cores ($(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1))"
-  printf '| %s | %s | %s | %s | %s |\n' target executions "time [s]" "corpus files" \
-    "coverage of src/ by the corpus"
-  printf '|---|---:|---:|---:|---|\n'
+  printf '| %s | %s | %s | %s | %s | %s |\n' target executions "time [s]" "corpus files" \
+    "coverage of src/ by the corpus" "of src/model/"
+  printf '|---|---:|---:|---:|---|---|\n'
   for t in "${targets[@]}"; do
-    printf '| %s | %s | %s | %s | %s |\n' "$t" "${execs[$t]:-?}" "${times[$t]}" \
-      "${corpus_size[$t]}" "${lines[$t]}"
+    printf '| %s | %s | %s | %s | %s | %s |\n' "$t" "${execs[$t]:-?}" "${times[$t]}" \
+      "${corpus_size[$t]}" "${lines[$t]}" "${model_lines[$t]}"
   done
-  echo "all targets together: $all"
+  all_model=$("$cov" report build-fuzz-cov/src/libb2b.so -instr-profile="$prof/all.profdata" \
+    "$PWD/src/model" | awk "$total")
+  echo "all targets together: $all; src/model/: $all_model"
   echo "(per-file report: $cov report build-fuzz-cov/src/libb2b.so -instr-profile=$prof/all.profdata $PWD/src)"
 fi
 

@@ -93,6 +93,11 @@
  * x[ldx*k + 0..2] (a 3 x n_cols column-major array with leading dimension
  * ldx >= 3, so FEAP's x(ndm, numnp) works as is); n_cols >= n_nodes. Only
  * nodes of beams are read (each must be finite and within B2B_COORD_MAX).
+ *   Elements: before any search, every element of every beam is checked in
+ *     O(n): two consecutive nodes of a beam that coincide (a zero-length
+ *     element, wherever it is) are B2B_ERR_COINCIDENT, naming the beam and
+ *     segment; so a scene with all nodes on one point costs O(n), not the
+ *     O(n^2) search of its pairs.
  *   Broad phase: boxes around each segment (its Hermite control polygon,
  *     which contains the curve) grown by r + g0/2 + 4s/3, in Boost.Geometry's
  *     packed R-tree when b2b was built with the Boost headers, else in b2b's
@@ -215,7 +220,8 @@
  * then unchanged), B2B_ERR_NONFINITE (radius, coordinates, option values),
  * B2B_ERR_SIZE (a beam of too few nodes, ldx < 3, n_cols < n_nodes, ldeq < 3,
  * ldk, ldab, capacity, a replacement parameter set of another history
- * length, a restore size < 0, more broad-phase pairs than
+ * length, a restore size < 0, more than 2^29 segments at finalize, more
+ * broad-phase pairs than
  * "max_candidates"), B2B_ERR_NOMEM (memory exhausted, in any thread), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a
  * segment's B2B_ERR_COINCIDENT / B2B_ERR_FOLDED. Messages name the beam,
  * segment, host node or group.
@@ -285,7 +291,9 @@ B2B_EXPORT int b2b_model_set_real(b2b_model *model, const char *key, double valu
                                   int errmsg_len);
 B2B_EXPORT int b2b_model_set_int(b2b_model *model, const char *key, int value, char *errmsg,
                                  int errmsg_len);
-/* Builds segments, patches and neighbour tables; node numbers must be < n_nodes. */
+/* Builds segments, patches and neighbour tables; node numbers must be < n_nodes.
+ * Memory goes with the beams' nodes, not with n_nodes (a table of n_nodes ints
+ * only while that is at most about 4 times the beams' nodes). */
 B2B_EXPORT int b2b_model_finalize(b2b_model *model, int n_nodes, char *errmsg, int errmsg_len);
 
 B2B_EXPORT int b2b_model_update(b2b_model *model, const double *x, int ldx, int n_cols,

@@ -29,6 +29,14 @@ using b2b::capi::Reporter;
 using b2b::capi::Valid;
 namespace md = b2b::model;
 
+namespace {
+
+// A number the caller gave, as a message shows it (+ message_base): in 64
+// bits, so INT_MAX + 1 is not an overflow.
+long long shown(int value, int base) { return static_cast<long long>(value) + base; }
+
+}  // namespace
+
 namespace b2b {
 namespace capi {
 
@@ -61,8 +69,8 @@ int report_model_problem(const Reporter& r, const b2b_model* model, const md::Pr
     case W::NoGroupPair:
       return r.fail(pb.status, "no pair of groups interacts: call b2b_model_set_group_pair first");
     case W::NodeRange:
-      return r.fail(pb.status, "beam %d: node %d (position %d in its list) is out of range: the "
-                    "host has nodes %d .. %d", pb.beam + o, pb.node + o, pb.segment + o, o,
+      return r.fail(pb.status, "beam %d: node %lld (position %d in its list) is out of range: the "
+                    "host has nodes %d .. %d", pb.beam + o, shown(pb.node, o), pb.segment + o, o,
                     model->m.n_nodes() - 1 + o);
     case W::SelfNoGroupPair:
       return r.fail(pb.status, "beam %d has self-contact but its group %d is not paired with "
@@ -101,6 +109,9 @@ int report_model_problem(const Reporter& r, const b2b_model* model, const md::Pr
                     "pairs of segments that may touch (nodes on top of each other, or a "
                     "search margin far too large?); raise the bound with b2b_model_set_int if "
                     "the scene is meant to be so dense", pb.value);
+    case W::Segments:
+      return r.fail(pb.status, "the model has %.0f segments, more than the %lld b2b handles in "
+                    "one model", pb.value, static_cast<long long>(md::kMaxSegments));
     case W::Band:
       return r.fail(pb.status, "a contact couples equations %d and %d, outside the band (kl, "
                     "ku): widen the band", pb.row, pb.col);
@@ -203,8 +214,8 @@ int b2b_model_add_beam(b2b_model* model, const int* nodes, int n_nodes, int clos
     std::sort(sorted.begin(), sorted.end());
     for (int k = 1; k < n_nodes; ++k)
       if (sorted[k].first == sorted[k - 1].first)
-        return r.fail(B2B_ERR_RANGE, "beam %d: node %d appears twice (positions %d and %d)%s",
-                      b + o, sorted[k].first + o, sorted[k - 1].second + o, sorted[k].second + o,
+        return r.fail(B2B_ERR_RANGE, "beam %d: node %lld appears twice (positions %d and %d)%s",
+                      b + o, shown(sorted[k].first, o), sorted[k - 1].second + o, sorted[k].second + o,
                       closed ? "; a closed beam joins its last node to the first by itself" : "");
     md::Beam bm;
     bm.nodes.assign(nodes, nodes + n_nodes);
@@ -252,7 +263,7 @@ int b2b_model_set_self_contact(b2b_model* model, int beam, int on, double exclus
     if (int st = check_setup(r, model)) return st;
     const int o = model->message_base;
     if (beam < 0 || beam >= model->m.beam_count())
-      return r.fail(B2B_ERR_RANGE, "beam %d does not exist (beams %d .. %d)", beam + o, o,
+      return r.fail(B2B_ERR_RANGE, "beam %lld does not exist (beams %d .. %d)", shown(beam, o), o,
                     model->m.beam_count() - 1 + o);
     if (on != 0 && on != 1) return r.fail(B2B_ERR_RANGE, "on is %d (0 or 1)", on);
     if (!std::isfinite(exclusion_length))
@@ -287,8 +298,8 @@ int b2b_model_finalize(b2b_model* model, int n_nodes, char* errmsg, int errmsg_l
     if (pb.status && pb.what == md::Problem::What::NodeRange) {
       // Worded here: the model holds no n_nodes until it is finalized.
       const int o = model->message_base;
-      return r.fail(pb.status, "beam %d: node %d (position %d in its list) is out of range: the "
-                    "host has nodes %d .. %d", pb.beam + o, pb.node + o, pb.segment + o, o,
+      return r.fail(pb.status, "beam %d: node %lld (position %d in its list) is out of range: the "
+                    "host has nodes %d .. %d", pb.beam + o, shown(pb.node, o), pb.segment + o, o,
                     n_nodes - 1 + o);
     }
     if (pb.status) return report_model_problem(r, model, pb);
@@ -334,7 +345,7 @@ int b2b_model_get_contact(const b2b_model* model, int k, int* nodes, int* pair, 
     const int n = static_cast<int>(m.contacts().size());
     const int o = model->message_base;
     if (k < 0 || k >= n)
-      return r.fail(B2B_ERR_RANGE, "contact %d does not exist (%d active contacts%s)", k + o, n,
+      return r.fail(B2B_ERR_RANGE, "contact %lld does not exist (%d active contacts%s)", shown(k, o), n,
                     n ? "" : ": none");
     if (tangent != nullptr)
       if (int st = check_tangents(r, model)) return st;

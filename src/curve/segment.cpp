@@ -13,10 +13,16 @@
 
 namespace b2b {
 namespace curve {
+bool points_coincide(const double* xa, const double* xb) {
+  double d[3];
+  sub3(xb, xa, d);
+  const double tol =
+      std::max(B2B_LENGTH_MIN, 4.0 * DBL_EPSILON * std::max(max_abs3(xa), max_abs3(xb)));
+  return !(dot3(d, d) > tol * tol);
+}
+
 namespace {
 
-// Two nodes coincide when their distance is below B2B_LENGTH_MIN or lost in
-// the rounding of their coordinates (a few ulps of the larger one).
 bool coincident(const double* X, int sa, int sb) {
   const double* xa = X + 3 * sa;
   const double* xb = X + 3 * sb;

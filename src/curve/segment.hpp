@@ -15,6 +15,11 @@ namespace curve {
 
 // Why build() refused a patch: a b2b status code and the patch slots
 // (0-based, -1 if none) of the offending element or fold.
+// Two nodes coincide when their distance is below B2B_LENGTH_MIN or lost in
+// the rounding of their coordinates (a few ulps of the larger one): what
+// Segment::build reports as B2B_ERR_COINCIDENT.
+bool points_coincide(const double* xa, const double* xb);
+
 struct Failure {
   int status = 0;
   int slot_a = -1, slot_b = -1;

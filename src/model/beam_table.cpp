@@ -77,8 +77,8 @@ void BeamTable::measure_arcs(const std::vector<Beam>& beams, const double* coord
     std::vector<double> cum(n + 1, 0.0);
     const int last = beam.closed ? n : n - 1;
     for (int k = 0; k < last; ++k) {
-      const double* p = coords + 3 * used_index[beam.nodes[k]];
-      const double* q = coords + 3 * used_index[beam.nodes[(k + 1) % n]];
+      const double* p = coords + used_index.offset(beam.nodes[k]);
+      const double* q = coords + used_index.offset(beam.nodes[(k + 1) % n]);
       cum[k + 1] = cum[k] + std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
     }
     if (!beam.closed) cum[n] = cum[n - 1];

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace b2b {
@@ -24,6 +25,8 @@ class NodeIndex {
     auto it = std::lower_bound(table_.begin(), table_.end(), node);
     return it != table_.end() && *it == node ? static_cast<int>(it - table_.begin()) : -1;
   }
+  // Where a used node's coordinates start in a 3 x n_used array (64 bits).
+  size_t offset(int node) const { return 3 * static_cast<size_t>((*this)[node]); }
 
  private:
   bool dense_ = true;

@@ -7,6 +7,8 @@
 #include <b2b/b2b.h>
 
 #include "../pair/history.hpp"
+#include "../curve/segment.hpp"
+#include "../curve/topology.hpp"
 #include "../pair/laws.hpp"
 
 namespace b2b {
@@ -81,6 +83,15 @@ Problem Model::finalize(int n_nodes) {
       return pb;
     }
   }
+  int64_t n_segments = 0;  // in 64 bits: beams * nodes may exceed int
+  for (const Beam& b : beams_)
+    n_segments += curve::segment_count(b.kind, static_cast<int>(b.nodes.size()), b.closed);
+  if (n_segments > kMaxSegments) {
+    pb.status = B2B_ERR_SIZE;
+    pb.what = Problem::What::Segments;
+    pb.value = static_cast<double>(n_segments);
+    return pb;
+  }
   // Everything is built in locals first: an allocation failure leaves the
   // model unfinalized and as it was.
   // Dense group numbers and the group pairs between groups that have beams,
@@ -143,16 +154,46 @@ double Model::effective_margin() const {
 
 // Whether segments a and b may ever be in contact (before any geometry).
 bool Model::may_pair(int a, int b) const {
-  if (group_pair_index(a, b) < 0) return false;
-  if (table_.share_node(a, b)) return false;
-  const SegmentInfo &sa = table_.segment(a), &sb = table_.segment(b);
-  if (sa.beam != sb.beam) return true;
-  const Beam& beam = beams_[sa.beam];
-  if (!beam.self_contact) return false;
-  const double exclusion = beam.exclusion >= 0.0 ? beam.exclusion : 4.0 * beam.radius;
-  return table_.arc_gap(beam, a, b) > exclusion;
+  return may_pair_with_arcs(a, b, table_.arc_lo(), table_.arc_hi(), table_.arc_total());
 }
 
+Problem Model::check_elements(const double* coords) const {
+  Problem pb;
+  for (size_t b = 0; b < beams_.size(); ++b) {
+    const Beam& beam = beams_[b];
+    const int n = static_cast<int>(beam.nodes.size());
+    const int elements = beam.closed ? n : n - 1;
+    for (int k = 0; k < elements; ++k) {
+      const int u = beam.nodes[k], v = beam.nodes[(k + 1) % n];
+      if (!curve::points_coincide(coords + used_index_.offset(u), coords + used_index_.offset(v)))
+        continue;
+      pb.status = B2B_ERR_COINCIDENT;
+      pb.what = Problem::What::Segment;
+      pb.beam = static_cast<int>(b);
+      // the first segment whose patch holds the element (slots j, j + 1)
+      for (int s = 0; s < beam.n_segments && pb.slot_a < 0; ++s) {
+        const SegmentInfo& info = table_.segment(beam.first_segment + s);
+        for (int j = 0; j < 3; ++j)
+          if ((info.nodes[j] == u && info.nodes[j + 1] == v) ||
+              (info.nodes[j] == v && info.nodes[j + 1] == u)) {
+            pb.segment = s;
+            pb.slot_a = j;
+            pb.slot_b = j + 1;
+            break;
+          }
+      }
+      if (pb.slot_a < 0) {  // (every element is in some patch)
+        pb.segment = 0;
+        pb.slot_a = 1;
+        pb.slot_b = 2;
+      }
+      return pb;
+    }
+  }
+  return pb;
+}
+
+// The same with given arc spans (without them, no two segments of one beam).
 bool Model::may_pair_with_arcs(int a, int b, const std::vector<double>& lo,
                                const std::vector<double>& hi,
                                const std::vector<double>& total) const {

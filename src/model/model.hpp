@@ -35,12 +35,16 @@ struct CandidateLimit {};
 // 1.2 GB of candidate lists at the bound).
 constexpr int kDefaultMaxCandidates = 100000000;
 
+// The most segments a model may have (finalize: B2B_ERR_SIZE beyond): 2^29,
+// so that segment counts, their chunks and twice them stay far inside int.
+constexpr int64_t kMaxSegments = int64_t(1) << 29;
+
 // What went wrong, for the C boundary to word (status 0: nothing).
 struct Problem {
   int status = 0;
   enum class What {
     None, NodeRange, SelfNoGroupPair, NoGroupPair, Coordinate, Segment,
-    Overflow, Buffer, Equation, Band, Candidates
+    Overflow, Buffer, Equation, Band, Candidates, Segments
   } what = What::None;
   int beam = -1, segment = -1, node = -1, slot_a = -1, slot_b = -1, axis = -1;
   int other_beam = -1, other_segment = -1;
@@ -161,6 +165,9 @@ class Model {
     build_coords_.clear();
   }
   bool may_pair(int a, int b) const;
+  // The O(n) check before the search: B2B_ERR_COINCIDENT for the first
+  // element of a beam whose two nodes coincide in coords (used nodes).
+  Problem check_elements(const double* coords) const;
   // may_pair with the self-contact arc spans of a restart buffer.
   bool may_pair_with_arcs(int a, int b, const std::vector<double>& lo,
                           const std::vector<double>& hi, const std::vector<double>& total) const;

@@ -15,7 +15,7 @@ void gather_patch(const SegmentInfo& s, const double* coords, const NodeIndex& u
                   double X[12]) {
   for (int k = 0; k < 4; ++k) {
     const int node = s.nodes[k];
-    for (int i = 0; i < 3; ++i) X[3 * k + i] = node < 0 ? 0.0 : coords[3 * used_index[node] + i];
+    for (int i = 0; i < 3; ++i) X[3 * k + i] = node < 0 ? 0.0 : coords[used_index.offset(node) + i];
   }
 }
 
@@ -52,15 +52,15 @@ Box segment_box(const SegmentInfo& s, const double* coords, const NodeIndex& use
   for (int k = 0; k < 4; ++k) {
     const int node = s.nodes[k];
     if (node < 0 || (!all_slots && (k == 0 || k == 3))) continue;
-    const double* p = coords + 3 * used_index[node];
+    const double* p = coords + used_index.offset(node);
     for (int i = 0; i < 3; ++i) {
       box.lo[i] = std::min(box.lo[i], p[i]);
       box.hi[i] = std::max(box.hi[i], p[i]);
     }
   }
   if (grow_by_third) {
-    const double* p = coords + 3 * used_index[s.nodes[1]];
-    const double* q = coords + 3 * used_index[s.nodes[2]];
+    const double* p = coords + used_index.offset(s.nodes[1]);
+    const double* q = coords + used_index.offset(s.nodes[2]);
     const double grow = std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) / 3.0;
     for (int i = 0; i < 3; ++i) {
       box.lo[i] -= grow;

@@ -175,6 +175,8 @@ Problem Updater::gather() {
       cur_[3 * u + i] = p[i];
     }
   }
+  pb = m_.check_elements(cur_.data());  // O(n), before any search
+  if (pb.status) return pb;
   bool self = false;
   for (const Beam& b : m_.beams_) self = self || b.self_contact;
   if (self && !m_.table_.arcs_measured())

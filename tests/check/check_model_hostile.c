@@ -11,7 +11,8 @@
  *    finalize(INT_MAX) with one small beam, 10^5 groups;
  *  - memory: an update that runs out of memory inside the broad phase's
  *    parallel region (address-space limit) is B2B_ERR_NOMEM with the model
- *    unchanged; the "max_candidates" bound;
+ *    unchanged; the "max_candidates" bound; all nodes on one point refused
+ *    in O(n) before the search;
  *  - the "threads" range message; stats after revert and restore;
  *  - every option changed between updates acts as if set from the start;
  *    reverting the very first update forgets the self-contact arc lengths
@@ -545,8 +546,7 @@ START_TEST(out_of_memory_in_the_broad_phase) {
   char msg[B2B_ERRMSG_LEN] = "";
   b2b_params *p;
   double *x;
-  b2b_model *m = stack_model(20000, &x, &p);
-  ok(b2b_model_set_int(m, "max_candidates", INT_MAX, msg, sizeof msg), msg);
+  b2b_model *m = stack_model(20000, &x, &p);  /* default bound 1e8: memory runs out first */
   ok(b2b_model_set_int(m, "threads", 2, msg, sizeof msg), msg);
   ck_assert(limit_memory(96));
   const int st = b2b_model_update(m, x, 3, 40000, 0, msg, sizeof msg);
@@ -555,6 +555,57 @@ START_TEST(out_of_memory_in_the_broad_phase) {
   ck_assert_int_eq(b2b_model_contact_count(m, &n, NULL, 0), B2B_ERR_STATE);
   ck_assert_int_eq(b2b_model_stats(m, NULL, NULL, NULL, 0), B2B_ERR_STATE);
   printf("check_model_hostile: %s\n", msg);
+  free(x);
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
+START_TEST(out_of_memory_in_the_narrow_phase) {
+  /* finding 5, the parallel narrow phase: a grid of 320 x 320 crossing
+   * beams (2-node, one segment each), every crossing active: 102,400
+   * tangents of 4.6 kB each are kept in the parallel region of the
+   * evaluation, under a limit of 250 MB more than the process holds. */
+  if (UNDER_ASAN) {
+    printf("check_model_hostile: out_of_memory_in_the_narrow_phase skipped under ASan\n");
+    return;
+  }
+  enum { N = 320 };
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  b2b_model *m = NULL;
+  ok(b2b_model_create(&m, msg, sizeof msg), msg);
+  double *x = malloc(12 * (size_t)N * sizeof(double));
+  const double d = 0.5, len = N * d + 1.0;
+  for (int b = 0; b < 2 * N; ++b) {
+    int nodes[2] = {2 * b, 2 * b + 1}, beam;
+    ok(b2b_model_add_beam(m, nodes, 2, 0, 0.1, B2B_CURVE_LINEAR, b < N ? 0 : 1, &beam, msg,
+                          sizeof msg), msg);
+    double *q = x + 6 * (size_t)b;
+    const int i = b % N;
+    if (b < N) { /* along x at y = i d */
+      q[0] = -1; q[1] = i * d; q[2] = 0; q[3] = len; q[4] = i * d; q[5] = 0;
+    } else { /* along y at x = (i + 1/2) d, 0.15 above */
+      q[0] = (i + 0.5) * d; q[1] = -1; q[2] = 0.15;
+      q[3] = (i + 0.5) * d; q[4] = len; q[5] = 0.15;
+    }
+  }
+  ok(b2b_model_set_group_pair(m, 0, 1, p, msg, sizeof msg), msg);
+  ok(b2b_model_finalize(m, 4 * N, msg, sizeof msg), msg);
+  ok(b2b_model_set_int(m, "threads", 2, msg, sizeof msg), msg);
+  ck_assert(limit_memory(250));
+  const int st = b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg);
+  ck_assert_msg(st == B2B_ERR_NOMEM, "update under a memory limit: status %d (%s)", st, msg);
+  int n;
+  ck_assert_int_eq(b2b_model_contact_count(m, &n, NULL, 0), B2B_ERR_STATE);
+  printf("check_model_hostile: narrow phase: %s\n", msg);
+  /* the limit lifted, the same update goes through: all N^2 crossings */
+  struct rlimit rl;
+  getrlimit(RLIMIT_AS, &rl);
+  rl.rlim_cur = rl.rlim_max;
+  ck_assert(setrlimit(RLIMIT_AS, &rl) == 0);
+  ok(b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg), msg);
+  ck_assert_int_eq(count_contacts(m), N * N);
   free(x);
   b2b_model_destroy(&m);
   b2b_params_destroy(&p);
@@ -594,6 +645,28 @@ START_TEST(candidate_bound) {
 }
 END_TEST
 
+START_TEST(all_nodes_on_one_point) {
+  /* finding 5: with every node on one point the O(n^2) search ran before
+   * the O(n) coincident-node check. 20,000 beams: 2e8 pairs to search
+   * before; now B2B_ERR_COINCIDENT at once, naming the first element. */
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_params *p;
+  double *x;
+  b2b_model *m = stack_model(20000, &x, &p);
+  for (int k = 0; k < 6 * 20000; ++k) x[k] = 0.25;
+  const double t0 = cpu_seconds();
+  const int st = b2b_model_update(m, x, 3, 40000, 0, msg, sizeof msg);
+  const double t = cpu_seconds() - t0;
+  ck_assert_msg(st == B2B_ERR_COINCIDENT, "all nodes on one point: status %d (%s)", st, msg);
+  ck_assert_msg(strstr(msg, "beam 0, segment 0: nodes 0 and 1 coincide") != NULL, "%s", msg);
+  ck_assert_msg(t < 0.5, "the refusal took %.2f s of CPU time", t);
+  printf("check_model_hostile: all nodes on one point: %s (%.3f s)\n", msg, t);
+  free(x);
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 /* ------------------------------------------------------ messages and stats */
 
 START_TEST(threads_message) {
@@ -605,6 +678,29 @@ START_TEST(threads_message) {
   EXPECT_FAIL(B2B_ERR_RANGE, "\"threads\" = -1 must be >= 0", NULL, NULL,
               b2b_model_set_int(m, "threads", -1, msg, sizeof msg));
   b2b_model_destroy(&m);
+}
+END_TEST
+
+START_TEST(numbers_in_messages_at_int_max) {
+  /* found by fuzz_model_calls: with "message_base" 1 a caller's number of
+   * INT_MAX was shown as INT_MAX + 1 in int (signed overflow, UBSan). */
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_model *m = NULL;
+  ok(b2b_model_create(&m, msg, sizeof msg), msg);
+  ok(b2b_model_set_int(m, "message_base", 1, msg, sizeof msg), msg);
+  int nodes[2] = {INT_MAX, INT_MAX}, beam;
+  EXPECT_FAIL(B2B_ERR_RANGE, "node 2147483648 appears twice", NULL, NULL,
+              b2b_model_add_beam(m, nodes, 2, 0, 0.1, B2B_CURVE_LINEAR, 0, &beam, msg, sizeof msg));
+  EXPECT_FAIL(B2B_ERR_RANGE, "beam 2147483648 does not exist", NULL, NULL,
+              b2b_model_set_self_contact(m, INT_MAX, 1, -1.0, msg, sizeof msg));
+  nodes[0] = 0;
+  ok(b2b_model_add_beam(m, nodes, 2, 0, 0.1, B2B_CURVE_LINEAR, 0, &beam, msg, sizeof msg), msg);
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  ok(b2b_model_set_group_pair(m, 0, 0, p, msg, sizeof msg), msg);
+  EXPECT_FAIL(B2B_ERR_RANGE, "node 2147483648 (position 2", NULL, NULL,
+              b2b_model_finalize(m, 5, msg, sizeof msg));
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
 }
 END_TEST
 
@@ -751,6 +847,7 @@ int main(void) {
   tcase_add_test(state, search_margin_raised_after_an_update);
   tcase_add_test(state, each_option_changed_between_updates);
   tcase_add_test(state, threads_message);
+  tcase_add_test(state, numbers_in_messages_at_int_max);
   suite_add_tcase(s, state);
   TCase *sizes = tcase_create("sizes");
   tcase_add_test(sizes, band_whose_size_overflows_int);
@@ -758,7 +855,9 @@ int main(void) {
   tcase_add_test(sizes, finalize_int_max_nodes);
   tcase_add_test(sizes, many_groups);
   tcase_add_test(sizes, out_of_memory_in_the_broad_phase);
+  tcase_add_test(sizes, out_of_memory_in_the_narrow_phase);
   tcase_add_test(sizes, candidate_bound);
+  tcase_add_test(sizes, all_nodes_on_one_point);
   suite_add_tcase(s, sizes);
   return tst_run_suite(s);
 }

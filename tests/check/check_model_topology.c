@@ -83,7 +83,9 @@ static int corner_contacts(int kind, int shared) {
     a[k] = k; /* x from -1 to 0 */
     x[3 * k] = -1.0 + 0.2 * k;
     b[k] = shared ? 5 + k : 6 + k; /* y from 0 to 1 */
-    x[3 * (6 + k) + 1] = 0.2 * k;
+    /* shared: node 5 is the corner, nodes 6 .. 10 follow it (an element of
+     * length 0 from the corner to a node on top of it is refused) */
+    x[3 * (6 + k) + 1] = shared ? 0.2 * (k + 1) : 0.2 * k;
     x[3 * (6 + k) + 2] = shared ? 0.0 : 0.05;
   }
   b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);

@@ -560,6 +560,11 @@ contains
                 '"search_margin"'], 'unknown real key')
     call b2b_model_set_int(m, 'threads', -2, ierr, msg)
     call expect(ierr, B2B_ERR_RANGE, msg, [character(len=24) :: '"threads"', '-2'], 'threads -2')
+    call b2b_model_set_int(m, 'max_candidates', 0, ierr, msg)
+    call expect(ierr, B2B_ERR_RANGE, msg, [character(len=24) :: '"max_candidates"', '>= 1'], &
+                'max_candidates 0')
+    call b2b_model_set_int(m, 'max_candidates', 1000, ierr, msg)
+    call check(ierr == B2B_OK, 'max_candidates 1000 [' // trim(msg) // ']')
     ! update before finalize
     x = scene_x(0)
     call b2b_model_update(m, x, ierr=ierr, errmsg=msg)
