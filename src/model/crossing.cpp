@@ -23,9 +23,9 @@ void committed_motion(const BeamTable& table, const double* coords, const double
     double moved = 0.0;
     for (int node : info.nodes) {
       if (node < 0) continue;
-      const int u = used_index[node];
+      const size_t o = used_index.offset(node);
       double d[3];
-      curve::sub3(coords + 3 * u, committed + 3 * u, d);
+      curve::sub3(coords + o, committed + o, d);
       moved = std::max(moved, curve::norm3(d));
     }
     out.moved[s] = moved;

@@ -375,8 +375,8 @@ SegmentEnds Updater::ends_of(int s) const {
   } else if (info.kind == B2B_CURVE_LINEAR && m_.table_.segment(prev).kind == B2B_CURVE_LINEAR) {
     // The chord before the joint (slots x2 -> x3 of the previous segment).
     const SegmentInfo& pi = m_.table_.segment(prev);
-    const double* p0 = &cur_[3 * m_.used_index_[pi.nodes[1]]];
-    const double* p1 = &cur_[3 * m_.used_index_[pi.nodes[2]]];
+    const double* p0 = &cur_[m_.used_index_.offset(pi.nodes[1])];
+    const double* p1 = &cur_[m_.used_index_.offset(pi.nodes[2])];
     for (int i = 0; i < 3; ++i) e.prev_tangent[i] = 0.5 * (p1[i] - p0[i]);
     e.start_held = true;
   }
