@@ -472,7 +472,6 @@ Problem Updater::evaluate_all() {
 // tangents' layout does not depend on the threads.
 Problem Updater::crossed_pairs() {
   if (!has_committed_) return Problem();
-  synthetic_.assign(pair::kHistoryLengthMax * items_.size(), 0.0);
   for (size_t k = 0; k < items_.size(); ++k) {
     Item& it = items_[k];
     const int st = it.res.contact_status;
@@ -483,6 +482,9 @@ Problem Updater::crossed_pairs() {
     if (!may_have_crossed(motion_, it.a, it.b, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
       continue;
     const GroupPair& gp = m_.group_pairs_[it.gp];
+    // Only pairs that moved this far need one (rare within Newton's
+    // iterations): allocated at the first, one slot per item.
+    if (synthetic_.empty()) synthetic_.assign(pair::kHistoryLengthMax * items_.size(), 0.0);
     double* h = synthetic_.data() + pair::kHistoryLengthMax * k;
     if (!committed_history(m_.table_.segment(it.a), m_.table_.segment(it.b),
                            m_.committed_coords_.data(), m_.used_index_,
