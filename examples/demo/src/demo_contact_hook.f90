@@ -38,7 +38,8 @@ module demo_contact_hook
                  b2b_model_add_tangent_banded, b2b_model_add_tangent_dense, b2b_model_commit, &
                  b2b_model_revert, b2b_model_stats, b2b_model_destroy, b2b_model_audit, &
                  B2B_AUDIT_OTHER, B2B_AUDIT_PARALLEL, B2B_AUDIT_OUTSIDE_BOTH, B2B_AUDIT_NEVER_EVALUATED, &
-                 B2B_AUDIT_EXCLUDED_SELF, B2B_AUDIT_CROSSED, B2B_IX_COUNT_CROSSED, &
+                 B2B_AUDIT_EXCLUDED_SELF, B2B_AUDIT_CROSSED, B2B_IX_COUNT_CROSSED, B2B_IX_COUNT_ACTIVE, &
+                 B2B_MODEL_COUNTS_LEN, &
                  B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL, &
                  B2B_CURVE_HERMITE_NODAL_WEIGHTED, B2B_LAW_LINEAR, B2B_LAW_QUADRATIC, B2B_ERR_RANGE, &
                  B2B_TANGENT_EXACT, B2B_TANGENT_SYMMETRIC, B2B_TANGENT_MAIN, B2B_TANGENT_FD
@@ -115,6 +116,7 @@ contains
     integer, allocatable :: nodes(:)
     character(len=512) :: msg
     logical :: have_self_pair
+    integer :: counts(B2B_MODEL_COUNTS_LEN)
 
     if (on) call b2b_model_destroy(model)
     on = .false.
@@ -178,14 +180,24 @@ contains
     call b2b_params_destroy(params)
     call b2b_model_finalize(model, m%n_nodes, ierr, msg)
     call check(ierr, msg, 'finalize')
-    ! The initial configuration is the first converged state: committed, it
-    ! is what the model checks the first step against for beams that pass
-    ! through each other (B2B_COUNT_CROSSED), and where contacts of the
-    ! initial configuration anchor their friction.
+    ! The initial configuration, where it carries no contact force, is an
+    ! equilibrium at load 0, the first converged state: committed, it is
+    ! what the model checks the first step against for beams that pass
+    ! through each other (B2B_COUNT_CROSSED). One with active contacts is
+    ! not (their forces are not yet balanced, and committing it would anchor
+    ! their friction there): it is reverted, and the first step has no such
+    ! reference.
     call b2b_model_update(model, m%x, .false., ierr, msg)
     call check(ierr, msg, 'update (initial configuration)')
-    call b2b_model_commit(model, ierr, msg)
-    call check(ierr, msg, 'commit (initial configuration)')
+    call b2b_model_stats(model, counts, ierr=ierr, errmsg=msg)
+    call check(ierr, msg, 'stats (initial configuration)')
+    if (counts(B2B_IX_COUNT_ACTIVE) == 0) then
+      call b2b_model_commit(model, ierr, msg)
+      call check(ierr, msg, 'commit (initial configuration)')
+    else
+      call b2b_model_revert(model, ierr, msg)
+      call check(ierr, msg, 'revert (initial configuration)')
+    end if
     if (allocated(eq_all)) deallocate (eq_all)
     allocate (eq_all(ndf, m%n_nodes))
     eq_all = reshape([(i, i = 1, ndf * m%n_nodes)], [ndf, m%n_nodes])
