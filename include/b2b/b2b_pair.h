@@ -42,8 +42,34 @@
  *                the library (48 residual evaluations, step 1e-6 of the
  *                segments' length, the old history held fixed): a reference
  *                and a fallback, about 20x the cost of EXACT
+ *   "contact_type"       int   B2B_CONTACT_TYPE_POINT  which element a contact
+ *                                           model uses for a pair of segments
+ *                                           (and b2b_pair_eval_line's blend):
+ *     POINT      the point-wise element (b2b_pair_eval)
+ *     LINE       the line-contact element (b2b_pair_eval_line), at any angle
+ *     ALL_ANGLE  both, blended by the crossing angle (Line contact, below)
+ *   "line_penalty"       real  (required for LINE and ALL_ANGLE, and by
+ *                                           b2b_pair_eval_line) eps_L >= 0,
+ *                                           the normal penalty per unit length
+ *                                           of A (force per length^2)
+ *   "line_tangential_penalty" real (required with friction where
+ *                                           line_penalty is) eps_LT > 0, the
+ *                                           stick stiffness per unit length
+ *   "line_points"        int   0            integration points per segment of
+ *                                           A in a contact model, 0 .. 32; 0:
+ *                                           the default rule
+ *                                           (b2b_pair_line_points)
+ *   "line_angle"         real  5            ALL_ANGLE: below this crossing
+ *                                           angle (degrees) only line contact
+ *   "point_angle"        real  15           ALL_ANGLE: above it only point
+ *                                           contact; between, both blended
+ *                                           (parallel_angle < line_angle <
+ *                                           point_angle, else finalize is
+ *                                           B2B_ERR_RANGE)
  *
  * Finalize fails with B2B_ERR_STATE if a required option is missing.
+ * Line-contact options set with "contact_type" POINT are kept but not
+ * required (b2b_pair_eval_line then checks them).
  *
  * Normal laws (B2B_LAW_*), f_N >= 0 the compressive normal force, g the gap:
  *   LINEAR     f_N = eps_N max(0, -g)
@@ -197,6 +223,63 @@
  * the committed step, where the anchors were taken (doc/handover.md); a point
  * that crossed several joints is handed over once per joint.
  *
+ * Line contact (b2b_pair_eval_line; doc/line-contact.md)
+ * -----------------------------------------------------
+ * Beams that lie (nearly) parallel touch along a line, where the point
+ * element has no unique closest point (PARALLEL). The line element
+ * integrates along segment A: at n_points Gauss-Legendre points xi_i
+ * (weights w_i) the point x_A(xi_i) is projected orthogonally onto B's
+ * smoothed curve, eta_i minimising |x_A(xi_i) - x_B(eta)| (the end
+ * contact's one-sided problem with xi held at xi_i), with its own
+ * sign-tracked normal n_i and gap g_i = |x_A - x_B| - r_A - r_B, and the
+ * normal law per unit length of A ("line_penalty" in place of "penalty";
+ * the same "law" and "regularization_gap"). The potential is
+ *     Pi = sum_i w_i J_i pi(g_i),   J_i = |x_A,xi(xi_i)| (current length),
+ * and the residual its gradient,
+ *     residual = sum_i w_i (J_i r_i + pi(g_i) dJ_i/dX),
+ * r_i = -f_i dg_i/dX the point residual of integration point i; the
+ * tangent its exact derivative (the projections' motion and the curves'
+ * second derivatives included), symmetric without friction. A point whose
+ * eta_i lies outside [-1, 1) (ownership as for the point element) belongs
+ * to the pair of B's neighbouring segment: summed over the segments of B,
+ * every point of A is counted once, and on a C1 kind its projection moves
+ * continuously from one segment to the next (no gap at joints; at joints
+ * of the linear kind a point may have no projection or two, see
+ * doc/line-contact.md). The points are interior, so joints of A need no
+ * rule.
+ * Friction: each integration point has its own history and the point
+ * element's return mapping, with "line_tangential_penalty"; its anchor on
+ * A is xi_i itself (a material point of A), on B its committed eta. A
+ * force per unit length, integrated like the normal one; the dissipation
+ * likewise. Handover of a point's history to B's next segment is
+ * b2b_pair_history_handover on its slot (beam 1).
+ * Every angle ("contact_type" ALL_ANGLE): with s = sin^2 of the crossing
+ * angle and s1, s2 those of "line_angle" and "point_angle", the point
+ * weight is lambda(s) = u^2 (3 - 2u), u = (s - s1)/(s2 - s1) clipped to
+ * [0, 1] (C1 in the angle); the point element (on the free closest
+ * points) is weighted by lambda of its own angle and each integration
+ * point by 1 - lambda of its local angle (t_A(xi_i), t_B(eta_i)):
+ *     residual = lambda_P r_P + sum_i (1 - lambda_i) R_i.
+ * The force is continuous in the angle; in the blending range the
+ * residual is no potential's gradient, and the exact tangent includes
+ * r_P dlambda_P/dX - R_i dlambda_i/dX (not symmetric there). Outside it,
+ * it is the pure point or the pure line element. With another
+ * contact_type b2b_pair_eval_line evaluates the line element alone.
+ * The "tangent" option applies: SYMMETRIC symmetrizes the sum; MAIN sums
+ * the points' main terms w_i J_i (1 - lambda_i) (-f_i' G_i G_i^T) (and the
+ * point element's); FD differences the whole residual.
+ * History: (n_points + 1) consecutive histories of
+ * b2b_params_history_size doubles: the point element's first (written by
+ * ALL_ANGLE, else kept fresh), then integration point i's. hist_new may
+ * not be hist_old here (nothing is written on failure, as always).
+ * line_info[B2B_LINE_INFO_LEN]: see B2B_LINE_INFO_*; point_info (NULL, or
+ * 32 x n_points): each integration point's info as b2b_pair_eval's, with
+ * force, energy, tangential force and dissipation per unit length, unweighted.
+ * n_points: 1 .. B2B_LINE_POINTS_MAX (b2b_pair_line_points gives the
+ * default); a hist_len other than (n_points + 1) times the history size is
+ * B2B_ERR_SIZE; params without "line_penalty" (or, with friction,
+ * "line_tangential_penalty") B2B_ERR_STATE.
+ *
  * Bad input: B2B_ERR_NULL, B2B_ERR_STATE (params not finalized),
  * B2B_ERR_UNKNOWN_KIND, B2B_ERR_NONFINITE (coordinates, tangents, radii,
  * history), B2B_ERR_RANGE (a radius outside [0, B2B_COORD_MAX], a coordinate
@@ -253,9 +336,12 @@ enum {
   B2B_INFO_DISSIPATION = 24,    /* energy dissipated by slip in this step, >= 0 */
   B2B_INFO_END_A = 25,          /* end contact: A's parameter held at this end of its
                                    segment, -1 or +1 (a node of A); 0: free */
-  B2B_INFO_END_B = 26           /* the same for B's parameter */
+  B2B_INFO_END_B = 26,          /* the same for B's parameter */
+  B2B_INFO_LINE_POINTS = 27     /* a contact model's line contact (b2b_model.h): its
+                                   integration points carrying force; 0 for a point
+                                   contact and in b2b_pair_eval */
 };
-#define B2B_PAIR_INFO_LEN 32 /* entries 27..31 are reserved (written as 0) */
+#define B2B_PAIR_INFO_LEN 32 /* entries 28..31 are reserved (written as 0) */
 
 /* Tangent options ("tangent"). Values are fixed. */
 enum {
@@ -264,6 +350,37 @@ enum {
   B2B_TANGENT_MAIN = 2,
   B2B_TANGENT_FD = 3
 };
+
+/* Contact types ("contact_type"). Values are fixed. */
+enum {
+  B2B_CONTACT_TYPE_POINT = 0,
+  B2B_CONTACT_TYPE_LINE = 1,
+  B2B_CONTACT_TYPE_ALL_ANGLE = 2
+};
+
+/* Integration points of the line element: at most this many per segment. */
+#define B2B_LINE_POINTS_MAX 32
+
+/* Entries of line_info of b2b_pair_eval_line. Values are fixed. */
+enum {
+  B2B_LINE_INFO_POINTS = 0,        /* integration points n_points */
+  B2B_LINE_INFO_ACTIVE_POINTS = 1, /* integration points carrying force (weight > 0) */
+  B2B_LINE_INFO_OWNED_POINTS = 2,  /* points whose projection this pair owns (open or active) */
+  B2B_LINE_INFO_NORMAL_FORCE = 3,  /* integrated normal force (line part weighted, plus
+                                      the point part's weighted f_N) */
+  B2B_LINE_INFO_ENERGY = 4,        /* contact potential (weighted parts) */
+  B2B_LINE_INFO_DISSIPATION = 5,   /* dissipation of the step (weighted parts) */
+  B2B_LINE_INFO_MIN_GAP = 6,       /* smallest gap of the owned points (and of the point
+                                      part where it is owned); DBL_MAX if none */
+  B2B_LINE_INFO_SYMMETRIC = 7,     /* 1 if the tangent is symmetric */
+  B2B_LINE_INFO_STICK_POINTS = 8,  /* active points sticking */
+  B2B_LINE_INFO_SLIP_POINTS = 9,   /* active points slipping */
+  B2B_LINE_INFO_LENGTH = 10,       /* sum w_i J_i: the current length of segment A */
+  B2B_LINE_INFO_POINT_WEIGHT = 11, /* ALL_ANGLE: lambda_P of the point element, else 0 */
+  B2B_LINE_INFO_POINT_STATUS = 12, /* ALL_ANGLE: the point element's B2B_CONTACT_*, else -1 */
+  B2B_LINE_INFO_POINT_FORCE = 13   /* ALL_ANGLE: lambda_P f_N of the point element */
+};
+#define B2B_LINE_INFO_LEN 16 /* entries 14, 15 are reserved (written as 0) */
 
 /* Friction state of a pair (info[B2B_INFO_FRICTION_STATE]). Values are fixed. */
 enum { B2B_FRICTION_NONE = 0, B2B_FRICTION_STICK = 1, B2B_FRICTION_SLIP = 2 };
@@ -302,6 +419,26 @@ B2B_EXPORT int b2b_pair_eval_ends(const b2b_params *params, const int segments[6
                                   const double *hist_old, double *hist_new, int hist_len,
                                   int *contact_status, double info[32], double residual[24],
                                   double *tangent, int ldk, char *errmsg, int errmsg_len);
+
+/* The line-contact element (see Line contact above): n_points integration
+ * points along A; hist_old, hist_new: (n_points + 1) * history size doubles
+ * (hist_len); point_info: NULL or 32 * n_points doubles. */
+B2B_EXPORT int b2b_pair_eval_line(const b2b_params *params, const int segments[6],
+                                  const double X[24], const double end_tangents[12],
+                                  const double radii[2], int n_points, const double *hist_old,
+                                  double *hist_new, int hist_len, int *contact_status,
+                                  double line_info[16], double *point_info,
+                                  double residual[24], double *tangent, int ldk, char *errmsg,
+                                  int errmsg_len);
+
+/* The integration points of a segment of (current chord) length `length`
+ * between beams of radii radius_a and radius_b: "line_points" if it is set
+ * (> 0), else the default rule 3 + ceil(length / (radius_a + radius_b)),
+ * within 4 .. 16 (16 for zero radii): about one point per contact width
+ * and a degree-7 rule at least. length, radii >= 0 and finite. */
+B2B_EXPORT int b2b_pair_line_points(const b2b_params *params, double length, double radius_a,
+                                    double radius_b, int *n_points, char *errmsg,
+                                    int errmsg_len);
 
 /* Re-expresses a committed pair history for the neighbouring segment of one
  * beam (see Handover above). beam: 0 (A) or 1 (B), the beam whose segment

@@ -8,20 +8,20 @@
 #include "../pair/contact_element.hpp"
 #include "firewall.hpp"
 #include "history_checks.hpp"
+#include "pair_checks.hpp"
 #include "params_handle.hpp"
 #include "segment_checks.hpp"
 
 using b2b::capi::check_finalized;
 using b2b::capi::check_history;
-using b2b::capi::check_segment;
+using b2b::capi::check_pair_segments;
+using b2b::capi::kPairBeam;
 using b2b::capi::guarded;
 using b2b::capi::report_segment_failure;
 using b2b::capi::Reporter;
 namespace pr = b2b::pair;
 
 namespace {
-
-const char* const kBeam[2] = {"beam A: ", "beam B: "};
 
 // b2b_pair_eval and b2b_pair_eval_ends: ends null for the free pair.
 int eval_pair(const Reporter& r, const b2b_params* params, const int* segments, const double* X,
@@ -30,9 +30,6 @@ int eval_pair(const Reporter& r, const b2b_params* params, const int* segments, 
               double* info, double* residual, double* tangent, int ldk) {
   return guarded(r, [&]() -> int {
     if (int st = check_finalized(r, params)) return st;
-    if (segments == nullptr) return r.fail(B2B_ERR_NULL, "segments is NULL");
-    if (X == nullptr) return r.fail(B2B_ERR_NULL, "X is NULL");
-    if (radii == nullptr) return r.fail(B2B_ERR_NULL, "radii is NULL");
     if (hist_old == nullptr) return r.fail(B2B_ERR_NULL, "hist_old is NULL");
     if (hist_new == nullptr) return r.fail(B2B_ERR_NULL, "hist_new is NULL");
     if (contact_status == nullptr) return r.fail(B2B_ERR_NULL, "contact_status is NULL");
@@ -44,7 +41,7 @@ int eval_pair(const Reporter& r, const b2b_params* params, const int* segments, 
     if (ends) {
       for (int b = 0; b < 2; ++b)
         if (ends[b] < -1 || ends[b] > 1)
-          return r.fail(B2B_ERR_RANGE, "%sends[%d] is %d, must be -1, 0 or +1", kBeam[b], b,
+          return r.fail(B2B_ERR_RANGE, "%sends[%d] is %d, must be -1, 0 or +1", kPairBeam[b], b,
                         ends[b]);
       held.a = ends[0];
       held.b = ends[1];
@@ -52,25 +49,14 @@ int eval_pair(const Reporter& r, const b2b_params* params, const int* segments, 
 
     pr::SegmentInput seg[2];
     double unit[2][6];
-    for (int b = 0; b < 2; ++b) {
-      const int* s = segments + 3 * b;
-      if (int st = check_segment(r, kBeam[b], s[0], s[1], s[2], X + 12 * b,
-                                 end_tangents ? end_tangents + 6 * b : nullptr, unit[b]))
-        return st;
-      if (!std::isfinite(radii[b]))
-        return r.fail(B2B_ERR_NONFINITE, "%sradius is not finite (%g)", kBeam[b], radii[b]);
-      if (radii[b] < 0.0 || radii[b] > B2B_COORD_MAX)
-        return r.fail(B2B_ERR_RANGE, "%sradius %g must be in [0, B2B_COORD_MAX]", kBeam[b],
-                      radii[b]);
-      seg[b] = pr::SegmentInput{s[0], s[1], s[2], X + 12 * b, unit[b], radii[b]};
-    }
+    if (int st = check_pair_segments(r, segments, X, end_tangents, radii, seg, unit)) return st;
     if (int st = check_history(r, params->p, "hist_old", hist_old, hist_len)) return st;
 
     pr::PairResult out;
     double K[pr::kNdof * pr::kNdof];
     const pr::PairFailure f =
         pr::evaluate_pair(params->p, seg[0], seg[1], hist_old, out, tangent ? K : nullptr, held);
-    if (f.status != B2B_OK) return report_segment_failure(r, kBeam[f.beam], f.segment);
+    if (f.status != B2B_OK) return report_segment_failure(r, kPairBeam[f.beam], f.segment);
     if (out.overflow && params->p.friction > 0.0)
       return r.fail(B2B_ERR_RANGE,
                     "the contact force, energy or tangent overflows (penalty %g, "

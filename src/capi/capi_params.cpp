@@ -4,6 +4,7 @@
 
 #include "../pair/history.hpp"
 #include "../pair/laws.hpp"
+#include "../pair/line_contact.hpp"
 #include "../pair/tangent_options.hpp"
 #include "firewall.hpp"
 #include "params_handle.hpp"
@@ -60,6 +61,32 @@ constexpr Option<Params> kOptions[] = {
     {"tangent", OptionType::Int, Valid::one_of(b2b::pair::kTangentModeEnumeration),
      [](Params& p, double v) { p.tangent = static_cast<int>(v); },
      [](const Params& p) { return static_cast<double>(p.tangent); }},
+    {"contact_type", OptionType::Int, Valid::one_of(b2b::pair::kContactTypeEnumeration),
+     [](Params& p, double v) { p.contact_type = static_cast<int>(v); },
+     [](const Params& p) { return static_cast<double>(p.contact_type); }},
+    {"line_penalty", OptionType::Real, Valid::at_least(0.0),
+     [](Params& p, double v) {
+       p.line_penalty = v;
+       p.line_penalty_set = true;
+     },
+     [](const Params& p) { return p.line_penalty; }},
+    {"line_tangential_penalty", OptionType::Real, Valid::above(0.0),
+     [](Params& p, double v) {
+       p.line_tangential_penalty = v;
+       p.line_tangential_penalty_set = true;
+     },
+     [](const Params& p) { return p.line_tangential_penalty; }},
+    {"line_points", OptionType::Int, Valid::interval(0, false, B2B_LINE_POINTS_MAX, false),
+     [](Params& p, double v) { p.line_points = static_cast<int>(v); },
+     [](const Params& p) { return static_cast<double>(p.line_points); }},
+    {"line_angle", OptionType::Real,
+     Valid::interval(0.0, true, 90.0, true, nullptr, "degrees"),
+     [](Params& p, double v) { p.line_angle_deg = v; },
+     [](const Params& p) { return p.line_angle_deg; }},
+    {"point_angle", OptionType::Real,
+     Valid::interval(0.0, true, 90.0, true, nullptr, "degrees"),
+     [](Params& p, double v) { p.point_angle_deg = v; },
+     [](const Params& p) { return p.point_angle_deg; }},
 };
 
 int check_settable(const Reporter& r, const b2b_params* params, const char* key) {
@@ -160,6 +187,21 @@ int b2b_params_finalize(b2b_params* params, char* errmsg, int errmsg_len) {
         return r.fail(B2B_ERR_STATE,
                       "\"friction\" is %g but \"tangential_penalty\" has not been set",
                       p.friction);
+      case b2b::pair::MissingOption::LinePenalty:
+        return r.fail(B2B_ERR_STATE,
+                      "\"contact_type\" is %s but \"line_penalty\" has not been set",
+                      b2b::pair::kContactTypes[p.contact_type].name);
+      case b2b::pair::MissingOption::LineTangentialPenalty:
+        return r.fail(B2B_ERR_STATE,
+                      "\"contact_type\" is %s and \"friction\" is %g but "
+                      "\"line_tangential_penalty\" has not been set",
+                      b2b::pair::kContactTypes[p.contact_type].name, p.friction);
+      case b2b::pair::MissingOption::BlendRange:
+        return r.fail(B2B_ERR_RANGE,
+                      "\"contact_type\" is B2B_CONTACT_TYPE_ALL_ANGLE, which needs "
+                      "\"parallel_angle\" < \"line_angle\" < \"point_angle\" (they are %g, "
+                      "%g, %g degrees)",
+                      p.parallel_angle_deg, p.line_angle_deg, p.point_angle_deg);
     }
     return r.fail(B2B_ERR_INTERNAL, "unclassified finalize outcome");
   });

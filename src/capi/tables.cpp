@@ -67,8 +67,15 @@ int check_option_value(const Reporter& r, const char* key, OptionType type, cons
 
 int fail_unknown_key(const Reporter& r, const char* key, OptionType type, const char* keys) {
   const char* what = type == OptionType::Real ? "real" : "integer";
-  return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown %s key \"%.64s\" (%s keys: %s)", what, key, what,
-                keys);
+  // The list must arrive whole: what is left of B2B_ERRMSG_LEN after it,
+  // the text around it and the longest function name (32) is the most of an
+  // unknown (possibly huge) key that is echoed, 16 .. 64 characters, "..."
+  // marking a cut.
+  const int left = B2B_ERRMSG_LEN - 1 - 32 - 40 - static_cast<int>(std::strlen(keys));
+  const int room = left < 16 ? 16 : (left > 64 ? 64 : left);
+  const bool cut = std::strlen(key) > static_cast<std::size_t>(room);
+  return r.fail(B2B_ERR_UNKNOWN_KEY, "unknown %s key \"%.*s%s\" (%s keys: %s)", what, room, key,
+                cut ? "..." : "", what, keys);
 }
 
 void append_key(char* list, std::size_t size, const char* key) {

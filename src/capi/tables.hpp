@@ -79,8 +79,9 @@ struct Option {
 int check_option_value(const Reporter& r, const char* key, OptionType type, const Valid& valid,
                        double value);
 
-// B2B_ERR_UNKNOWN_KEY: key (echoed as "%.64s", so that B2B_ERRMSG_LEN holds
-// the whole message, b2b.h) is not one of `keys`, the keys of this type, listed.
+// B2B_ERR_UNKNOWN_KEY: key (echoed to at most 64 characters, fewer the
+// longer the list, so that B2B_ERRMSG_LEN holds the whole message, b2b.h) is
+// not one of `keys`, the keys of this type, listed.
 int fail_unknown_key(const Reporter& r, const char* key, OptionType type, const char* keys);
 
 // Appends "\"key\"" to a list of keys (", " between them) in list[size].

@@ -44,7 +44,8 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
 }
 
 void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef& B,
-                    const double* hist_old, PairResult& out, double* K, Ends ends) {
+                    const double* hist_old, PairResult& out, double* K, Ends ends,
+                    Kinematics* kin) {
   out = PairResult();
   const int hist_len = history_length(params);
   std::memcpy(out.history, hist_old, hist_len * sizeof(double));
@@ -65,6 +66,7 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
     if (K) std::memset(K, 0, kNdof * kNdof * sizeof(double));
     out.overflow = !all_finite(out.info, kInfoLength) || !all_finite(out.history, hist_len);
   };
+  if (kin) *kin = k;
   if (geometric != B2B_CONTACT_OPEN) return no_force(geometric);
   const LawValue law = normal_law(params, k.gap);
   info[B2B_INFO_NORMAL_FORCE] = law.force;
@@ -90,7 +92,8 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   const bool friction = params.friction > 0.0;
   const FrictionContact fc{&sa,       &sb,      k.xi,     k.eta,        k.pa.xd,
                            k.pa.xdd,  k.pb.xd,  k.n,      k.rho_signed, law.force,
-                           law.slope, k.pb.xdd, k.end_a,  k.end_b};
+                           law.slope, k.pb.xdd, k.end_a,  k.end_b,
+                           k.held_a || k.held_b};
   FrictionResult fr;
   if (friction) {
     fr = friction_force(params, fc, hist_old);

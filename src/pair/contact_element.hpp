@@ -52,9 +52,11 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
 // segment once per update and evaluates every candidate pair on them).
 // hist_old: a valid history of history_length(params) doubles. K: 24 x 24,
 // column-major, leading dimension 24, or null for no tangent; zero when the
-// pair is not active.
+// pair is not active. kin: if not null, receives the kinematics (valid where
+// the pair is active; the line element's blending differentiates them).
 void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef& B,
-                    const double* hist_old, PairResult& out, double* K, Ends ends = Ends());
+                    const double* hist_old, PairResult& out, double* K, Ends ends = Ends(),
+                    Kinematics* kin = nullptr);
 
 }  // namespace pair
 }  // namespace b2b

@@ -35,6 +35,18 @@ bool owns(double t, double speed, double length, bool beam_ends_here) {
 // segment's (half its chord length), a cusp (b2b_pair.h, PARALLEL).
 bool at_cusp(double speed, double chord_length) { return !(speed > 0.005 * chord_length); }
 
+// The parameter of B's chord b0-b1 nearest to x_A(xi), clamped to [-1, 1].
+double chord_projection(const curve::Segment& sa, double xi, const double* b0,
+                        const double* b1) {
+  double p[3], c[3];
+  sa.point_from(b0, xi, p, nullptr, nullptr);  // x_A(xi) - b0
+  sub3(b1, b0, c);
+  const double cc = dot3(c, c);
+  if (!(cc > 0.0)) return 0.0;
+  const double t = 2.0 * dot3(p, c) / cc - 1.0;
+  return std::fmin(1.0, std::fmax(-1.0, t));
+}
+
 }  // namespace
 
 int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentRef& B,
@@ -73,14 +85,20 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     eta0 = std::fmin(1.0, std::fmax(-1.0, hist_old[kHistEta]));
   } else {
     chord_start(a0, a1, b0, b1, unit, &xi0, &eta0);
+    // A line-contact point (Ends::at_point): B's chord parameter of its
+    // projection, where the chords' own closest points (undefined for
+    // parallel chords) say nothing about it.
+    if (ends.at_point) eta0 = chord_projection(sa, ends.xi_a, b0, b1);
   }
   k.end_a = ends.a;
   k.end_b = ends.b;
+  k.held_a = ends.held_a();
+  k.held_b = ends.held_b();
   info[B2B_INFO_END_A] = ends.a;
   info[B2B_INFO_END_B] = ends.b;
-  if (ends.a) xi0 = ends.a;
-  if (ends.b) eta0 = ends.b;
-  const unsigned fixed = (ends.a ? kFixXi : kFixNone) | (ends.b ? kFixEta : kFixNone);
+  if (ends.held_a()) xi0 = ends.xi_held();
+  if (ends.held_b()) eta0 = ends.b;
+  const unsigned fixed = (ends.held_a() ? kFixXi : kFixNone) | (ends.held_b() ? kFixEta : kFixNone);
   const ClosestPoints cp =
       closest_points(sa, sb, xi0, eta0, params.max_iterations, tol_length, unit, fixed);
   k.xi = cp.xi;
@@ -160,10 +178,10 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
     // node's distance to a segment is defined at any angle. What is left
     // must be a minimum: the free parameter's own curvature h > 0 (none
     // for two nodes).
-    if (ends.a && ends.b) {
+    if (ends.held_a() && ends.held_b()) {
       k.h11 = k.h22 = 1.0;
       k.h12 = 0.0;
-    } else if (ends.a) {
+    } else if (ends.held_a()) {
       if (!(k.h22 > 1e-12 * nb * nb)) return B2B_CONTACT_PARALLEL;
       k.h11 = 1.0;  // decoupled (linearization.cpp reads only h22)
       k.h12 = 0.0;
@@ -213,8 +231,8 @@ int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentR
   history[kHistXi] = k.xi;
   history[kHistEta] = k.eta;
 
-  if ((!ends.a && !owns(k.xi, na * unit, len_a, A.end_rule != B2B_END_NEIGHBOUR)) ||
-      (!ends.b && !owns(k.eta, nb * unit, len_b, B.end_rule != B2B_END_NEIGHBOUR)))
+  if ((!ends.held_a() && !owns(k.xi, na * unit, len_a, A.end_rule != B2B_END_NEIGHBOUR)) ||
+      (!ends.held_b() && !owns(k.eta, nb * unit, len_b, B.end_rule != B2B_END_NEIGHBOUR)))
     return B2B_CONTACT_OUTSIDE;
   return B2B_CONTACT_OPEN;
 }

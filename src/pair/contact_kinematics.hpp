@@ -38,14 +38,25 @@ struct Kinematics {
   // End contact (doc/contact-element.md section 14): the parameter of A
   // (B) held at this end of its segment, -1 or +1; 0: free.
   int end_a = 0, end_b = 0;
+  // Held parameters: an end contact's, or A's at a line-contact
+  // integration point (Ends::at_point); they do not move with X.
+  bool held_a = false, held_b = false;
 };
 
 // Which parameters of a pair are held at an end of their segment: a node of
 // A (end_a = -1 or +1, its xi) or of B (end_b, its eta) in contact with the
 // other beam; 0: free, the point-wise element of Wriggers and Zavarise.
+// A line-contact integration point (line_contact.hpp) holds A's parameter
+// at an interior value xi_a instead (at_point; a and b stay 0): the same
+// one-sided problem, the point of A projected onto B.
 struct Ends {
   int a = 0, b = 0;
-  bool any() const { return a != 0 || b != 0; }
+  bool at_point = false;
+  double xi_a = 0.0;
+  bool held_a() const { return a != 0 || at_point; }
+  bool held_b() const { return b != 0; }
+  bool any() const { return held_a() || held_b(); }
+  double xi_held() const { return at_point ? xi_a : a; }
 };
 
 // Fills k and the geometric entries of info (B2B_INFO_XI .. _GAP, ANGLE,

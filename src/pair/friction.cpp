@@ -30,7 +30,7 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   fr.speed_a = norm3(c.ta);
   fr.frame_norm = fr.speed_a;
   for (int i = 0; i < 3; ++i) fr.e1[i] = c.ta[i] / fr.speed_a;
-  if (c.end_a || c.end_b) {
+  if (c.held) {
     // An end contact: the held beam's tangent is not normal to n (the node's
     // distance is minimised along the other beam only), and x_A,xi/|x_A,xi|
     // with n x e1 was then no orthonormal frame of the tangent plane: the

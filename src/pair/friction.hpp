@@ -27,6 +27,9 @@ struct FrictionContact {
   // tangent onto the tangent plane (frame_tangent); tbd = x_B,etaeta.
   const double* tbd = nullptr;
   int end_a = 0, end_b = 0;
+  // Any parameter held (an end contact or a line-contact point): the
+  // frame is then projected (see friction.cpp).
+  bool held = false;
 };
 
 enum FrameSource { kFrameA = 0, kFrameB = 1, kFrameAxis = 2 };

@@ -33,7 +33,7 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
   Linearization lin;
   const ContactGeometry geo{PA,    PAd,   PB,    PBd,   k.pa.xd,    k.pb.xd,
                             k.d,   k.n,   k.h11, k.h12, k.h22,      k.det,
-                            k.inv_unit, k.end_a != 0, k.end_b != 0};
+                            k.inv_unit, k.held_a,     k.held_b};
   linearize(curve::used_slots(A.kind, A.start_rule, A.end_rule),
             curve::used_slots(B.kind, B.start_rule, B.end_rule), geo, lin);
   const int m = lin.m;

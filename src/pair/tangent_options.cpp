@@ -31,6 +31,15 @@ void main_term(double slope, const double* PA, const double* PB, const double* n
 
 void fd_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
                 const double* hist_old, double* K, Ends ends) {
+  fd_tangent_of(A, B, K, [&](const SegmentRef& a, const SegmentRef& b, double* r) {
+    PairResult out;
+    evaluate_built(params, a, b, hist_old, out, nullptr, ends);
+    std::memcpy(r, out.residual, sizeof out.residual);
+  });
+}
+
+void fd_tangent_of(const SegmentRef& A, const SegmentRef& B, double* K,
+                   const PairResidual& residual) {
   const SegmentRef* in[2] = {&A, &B};
   double chord = 0.0, d[3];
   for (const SegmentRef* s : in) {
@@ -59,10 +68,7 @@ void fd_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
         SegmentRef moved = me;
         moved.seg = &seg;
         moved.X = X;
-        PairResult out;
-        evaluate_built(params, beam == 0 ? moved : A, beam == 0 ? B : moved, hist_old, out, nullptr,
-                       ends);
-        std::memcpy(r[side], out.residual, sizeof r[side]);
+        residual(beam == 0 ? moved : A, beam == 0 ? B : moved, r[side]);
       }
       if (!built) continue;
       for (int k = 0; k < kNdof; ++k) col[k] = (r[0][k] - r[1][k]) / (2.0 * h);

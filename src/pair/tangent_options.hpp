@@ -3,6 +3,8 @@
 // the residual. The exact one is tangent_assembly.hpp's.
 #pragma once
 
+#include <functional>
+
 #include <b2b/b2b.h>
 
 #include "../common/enumeration.hpp"
@@ -36,6 +38,13 @@ void main_term(double slope, const double* PA, const double* PB, const double* n
 // perturbed patch cannot be built keeps what K held.
 void fd_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
                 const double* hist_old, double* K, Ends ends = Ends());
+
+// The same differences of any residual of the pair: residual(A', B', r)
+// writes the 24 entries r on the segments A', B' (one of them perturbed).
+// The line element's B2B_TANGENT_FD.
+using PairResidual = std::function<void(const SegmentRef&, const SegmentRef&, double*)>;
+void fd_tangent_of(const SegmentRef& A, const SegmentRef& B, double* K,
+                   const PairResidual& residual);
 
 }  // namespace pair
 }  // namespace b2b

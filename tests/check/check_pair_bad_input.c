@@ -549,14 +549,14 @@ START_TEST(test_params_long_unknown_key) {
    * keys and its closing parenthesis) fits in B2B_ERRMSG_LEN, as b2b.h says. */
   check_failure("set_real(long key)",
                 b2b_params_set_real(p, key, 1.0, fresh_msg(), B2B_ERRMSG_LEN),
-                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"tangential_penalty\")", NULL);
+                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"point_angle\")", NULL);
   check_failure("set_int(long key)", b2b_params_set_int(p, key, 1, fresh_msg(), B2B_ERRMSG_LEN),
-                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"tangent\")", NULL);
+                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"line_points\")", NULL);
   check_failure("get_real(long key)",
                 b2b_params_get_real(p, key, &v, fresh_msg(), B2B_ERRMSG_LEN),
-                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"tangential_penalty\")", NULL);
+                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"point_angle\")", NULL);
   check_failure("get_int(long key)", b2b_params_get_int(p, key, &iv, fresh_msg(), B2B_ERRMSG_LEN),
-                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"tangent\")", NULL);
+                B2B_ERR_UNKNOWN_KEY, "kkkkkkkk", "\"line_points\")", NULL);
   ck_assert(v == SENT && iv == SENT_INT);
   /* A key set after a finalize names a long key the same way. */
   ck_assert_int_eq(b2b_params_set_real(p, "penalty", PEN, NULL, 0), B2B_OK);
