@@ -250,6 +250,11 @@ int b2b_model_set_group_pair(b2b_model* model, int ga, int gb, const b2b_params*
         return r.fail(B2B_ERR_SIZE, "groups (%d, %d): the new parameter set keeps %d doubles "
                       "per pair, the one it replaces %d (friction on one and off in the other?)",
                       ga, gb, len, g->hist_len);
+      const bool line = params->p.contact_type != B2B_CONTACT_TYPE_POINT;
+      if (line != g->line)
+        return r.fail(B2B_ERR_SIZE, "groups (%d, %d): the new parameter set is %s contact, the "
+                      "one it replaces %s (their pairs keep different histories)",
+                      ga, gb, line ? "line" : "point", g->line ? "line" : "point");
     }
     m.set_group_pair(ga, gb, params->p);
     return B2B_OK;

@@ -26,6 +26,7 @@ void Model::set_group_pair(int ga, int gb, const pair::Params& p) {
     GroupPair& g = group_pairs_[found->second];
     g.params = p;
     g.hist_len = pair::history_length(p);
+    g.line = p.contact_type != B2B_CONTACT_TYPE_POINT;
     if (finalized_) {
       g0_max_ = 0.0;
       for (const GroupPair& h : group_pairs_)
@@ -38,7 +39,8 @@ void Model::set_group_pair(int ga, int gb, const pair::Params& p) {
   if (group_pairs_.size() == group_pairs_.capacity())
     group_pairs_.reserve(2 * group_pairs_.size() + 1);
   gp_by_host_.emplace(std::make_pair(ga, gb), static_cast<int>(group_pairs_.size()));
-  group_pairs_.push_back(GroupPair{ga, gb, p, pair::history_length(p)});
+  group_pairs_.push_back(GroupPair{ga, gb, p, pair::history_length(p),
+                                   p.contact_type != B2B_CONTACT_TYPE_POINT});
 }
 
 const GroupPair* Model::group_pair(int ga, int gb) const {

@@ -24,7 +24,10 @@ namespace model {
 struct GroupPair {
   int ga, gb;  // host group numbers, ga <= gb
   pair::Params params;
-  int hist_len;
+  int hist_len;  // of one point element (a line pair keeps (n + 1) of them)
+  // "contact_type" LINE or ALL_ANGLE: its pairs are line pairs
+  // (pair/line_contact.hpp), each with its own count of integration points.
+  bool line = false;
 };
 
 // Thrown by the broad phase when it finds more than "max_candidates" pairs

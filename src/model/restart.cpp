@@ -215,14 +215,20 @@ struct RestartCodec {
       const int index = m.group_pair_index(ia, ib);  // >= 0: may_pair
       if (gp != static_cast<uint64_t>(index)) return fail("it is corrupted (group pair)");
       const GroupPair& g = m.group_pairs_[static_cast<size_t>(index)];
-      if (len != static_cast<uint64_t>(g.hist_len)) return fail("it is corrupted (history length)");
+      // A point pair keeps one history, a line pair n + 1 (1 <= n <= 32).
+      const uint64_t hl = static_cast<uint64_t>(g.hist_len);
+      const bool len_ok = g.line ? len % hl == 0 && len / hl >= 2 &&
+                                       len / hl <= static_cast<uint64_t>(B2B_LINE_POINTS_MAX) + 1
+                                 : len == hl;
+      if (!len_ok) return fail("it is corrupted (history length)");
       const size_t offset = st.hist.size();
       if (len > r.left() / 8) return fail("it is corrupted (histories)");
       st.hist.resize(offset + len);
       if (!r.bytes(st.hist.data() + offset, 8 * len)) return fail("it is corrupted (histories)");
-      if (pair::check_history(g.params, st.hist.data() + offset, static_cast<int>(len)).problem !=
-          pair::HistoryProblem::None)
-        return fail("it holds a pair history b2b could not have written");
+      for (uint64_t slot = 0; slot < len; slot += hl)
+        if (pair::check_history(g.params, st.hist.data() + offset + slot, g.hist_len).problem !=
+            pair::HistoryProblem::None)
+          return fail("it holds a pair history b2b could not have written");
       st.pairs.push_back(StoredPair{key, ia, ib, static_cast<int>(status), index, offset,
                                     static_cast<int>(len)});
     }
@@ -272,6 +278,19 @@ uint64_t Model::fingerprint() const {
     for (double v : {p.penalty, p.regularization_gap, p.parallel_angle_deg, p.friction,
                      p.tangential_penalty})
       mix_double(v);
+    // The line-contact options (ABI 1.3) only where one differs from its
+    // default: a buffer saved before they existed still restores.
+    const pair::Params d;
+    if (p.contact_type != d.contact_type || p.line_penalty_set || p.line_tangential_penalty_set ||
+        p.line_points != d.line_points || p.line_angle_deg != d.line_angle_deg ||
+        p.point_angle_deg != d.point_angle_deg) {
+      for (int v : {p.contact_type, p.line_points, int(p.line_penalty_set),
+                    int(p.line_tangential_penalty_set)})
+        mix_int(v);
+      for (double v : {p.line_penalty, p.line_tangential_penalty, p.line_angle_deg,
+                       p.point_angle_deg})
+        mix_double(v);
+    }
   }
   return h;
 }

@@ -25,8 +25,10 @@
 #include "../pair/handover.hpp"
 #include "../pair/history.hpp"
 #include "../pair/laws.hpp"
+#include "../pair/line_contact.hpp"
 #include "crossing.hpp"
 #include "end_contact.hpp"
+#include "line_pair.hpp"
 #include "model.hpp"
 #include "segment_geometry.hpp"
 
@@ -64,8 +66,12 @@ class Updater {
     uint64_t key;
     int a, b, gp;
     const double* hist_old;  // committed history, or null (fresh)
-    pair::PairResult res;
+    pair::PairResult res;    // a line pair's: its summary (summarize_line)
     int64_t tangent = -1;    // offset into tangents_
+    // A line pair (GroupPair::line): the length of its committed history,
+    // and its new histories, (n + 1) point histories for n integration points.
+    int hist_old_len = 0;
+    std::vector<double> line_hist;
   };
   Model& m_;
   const double* x_;
@@ -111,6 +117,7 @@ class Updater {
   }
   SegmentEnds ends_of(int s) const;
   void evaluate(Item& item, double* K) const;
+  void evaluate_line(Item& item, double* K) const;
   Problem evaluate_all();
   Problem crossed_pairs();
   Problem handovers();
@@ -289,6 +296,7 @@ void Updater::near_pairs() {
       it.a = sp->a;
       it.b = sp->b;
       it.hist_old = committed.history(*sp);
+      it.hist_old_len = sp->length;
     }
 }
 
@@ -384,12 +392,33 @@ SegmentEnds Updater::ends_of(int s) const {
 }
 
 void Updater::evaluate(Item& item, double* K) const {
+  if (m_.group_pairs_[item.gp].line) return evaluate_line(item, K);
   const double* h = item.hist_old ? item.hist_old : fresh_.data();
   const pair::Params& p = m_.group_pairs_[item.gp].params;
   const pair::SegmentRef A = ref(item.a), B = ref(item.b);
   pair::evaluate_built(p, A, B, h, item.res, K);
   if (item.res.contact_status == B2B_CONTACT_OUTSIDE)
     resolve_end_contact(p, A, B, ends_of(item.a), ends_of(item.b), h, item.res, K);
+}
+
+// A line pair (GroupPair::line): its committed histories, points taken over
+// from the pairs of B's neighbouring segments, the line element, and its
+// summary in the point element's layout (line_pair.hpp).
+void Updater::evaluate_line(Item& item, double* K) const {
+  const GroupPair& gp = m_.group_pairs_[item.gp];
+  const int hl = gp.hist_len;
+  const pair::SegmentRef A = ref(item.a), B = ref(item.b);
+  const int n = line_pair_points(gp.params, A, B, item.hist_old ? item.hist_old_len : 0, hl);
+  const size_t len = static_cast<size_t>(n + 1) * hl;
+  std::vector<double> in(len, 0.0);
+  if (item.hist_old) std::memcpy(in.data(), item.hist_old, len * sizeof(double));
+  take_over_points(m_.table_, m_.committed_, m_.committed_coords_, m_.used_index_, item.a,
+                   item.b, n, hl, in.data());
+  item.line_hist.assign(len, 0.0);
+  double point_info[pair::kInfoLength * B2B_LINE_POINTS_MAX];
+  pair::LineResult lr;
+  pair::evaluate_line(gp.params, A, B, n, in.data(), item.line_hist.data(), lr, point_info, K);
+  summarize_line(lr, point_info, n, item.res);
 }
 
 Problem Updater::overflow(const Item& item) const {
@@ -476,6 +505,7 @@ Problem Updater::crossed_pairs() {
     Item& it = items_[k];
     const int st = it.res.contact_status;
     if (it.hist_old || (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN)) continue;
+    if (m_.group_pairs_[it.gp].line) continue;  // line pairs: not yet (doc/line-contact.md §9)
     double d[3];
     for (int i = 0; i < 3; ++i)
       d[i] = it.res.info[B2B_INFO_POINT_A + i] - it.res.info[B2B_INFO_POINT_B + i];
@@ -517,6 +547,9 @@ Problem Updater::handovers() {
   std::vector<Item> added;
   for (const StoredPair& sp : committed.pairs) {
     if (sp.status != B2B_CONTACT_ACTIVE) continue;
+    // A line pair's points are handed over point by point when the pair of
+    // B's next segment is evaluated (take_over_points).
+    if (m_.group_pairs_[sp.group_pair].line) continue;
     const Item* own = find_item(sp.key);
     if (!own || own->res.contact_status != B2B_CONTACT_OUTSIDE) continue;
     const GroupPair& gp = m_.group_pairs_[sp.group_pair];
@@ -620,9 +653,15 @@ void Updater::finish() {
     if (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN) continue;
     min_gap = std::min(min_gap, r.info[B2B_INFO_GAP]);
     const GroupPair& gp = m.group_pairs_[it.gp];
-    trial.pairs.push_back(StoredPair{it.key, it.a, it.b, st, it.gp, trial.hist.size(), gp.hist_len});
-    trial.hist.insert(trial.hist.end(), r.history, r.history + gp.hist_len);
+    const double* h = gp.line ? it.line_hist.data() : r.history;
+    const int len = gp.line ? static_cast<int>(it.line_hist.size()) : gp.hist_len;
+    trial.pairs.push_back(StoredPair{it.key, it.a, it.b, st, it.gp, trial.hist.size(), len});
+    trial.hist.insert(trial.hist.end(), h, h + len);
     if (st != B2B_CONTACT_ACTIVE) continue;
+    if (gp.line) {
+      ++counts[B2B_COUNT_LINE];
+      totals[B2B_TOTAL_LINE_POINTS] += r.info[B2B_INFO_LINE_POINTS];
+    }
     Contact c;
     c.a = it.a;
     c.b = it.b;
