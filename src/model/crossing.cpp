@@ -6,6 +6,7 @@
 
 #include "../curve/vec3.hpp"
 #include "../pair/closest_point.hpp"
+#include "../pair/gauss_legendre.hpp"
 #include "../pair/history.hpp"
 #include "segment_geometry.hpp"
 
@@ -72,6 +73,48 @@ bool committed_history(const SegmentInfo& a, const SegmentInfo& b, const double*
   for (int i = 0; i < 3; ++i) hist[pair::kHistNormal + i] = d[i] / rho;
   hist[pair::kHistXi] = xi;
   hist[pair::kHistEta] = eta;
+  return true;
+}
+
+bool committed_line_histories(const SegmentInfo& a, const SegmentInfo& b, const double* committed,
+                              const NodeIndex& used_index, int max_iterations, int n, int hl,
+                              double* hist) {
+  curve::Segment sa, sb;
+  if (build_segment(a, committed, used_index, sa, false).status ||
+      build_segment(b, committed, used_index, sb, false).status)
+    return false;
+  std::fill(hist, hist + static_cast<size_t>(n + 1) * hl, 0.0);
+  committed_history(a, b, committed, used_index, max_iterations, hist, hl);
+  double t[3];
+  curve::sub3(sa.end_point(), sa.start_point(), t);
+  const double len_a = curve::norm3(t);
+  curve::sub3(sb.end_point(), sb.start_point(), t);
+  const double len_b = curve::norm3(t), unit = len_a + len_b;
+  const double *xs, *ws;
+  pair::gauss_legendre(n, &xs, &ws);
+  const double* origin = sa.base();
+  for (int i = 0; i < n; ++i) {
+    // B's chord parameter of the point, then the one-sided search
+    double xa[3], b0[3], c[3];
+    sa.point_from(origin, xs[i], xa, nullptr, nullptr);
+    curve::sub3(sb.start_point(), origin, b0);
+    curve::sub3(sb.end_point(), sb.start_point(), c);
+    for (int k = 0; k < 3; ++k) t[k] = xa[k] - b0[k];
+    const double eta0 = std::clamp(2.0 * curve::dot3(t, c) / (len_b * len_b) - 1.0, -1.0, 1.0);
+    const pair::ClosestPoints cp = pair::closest_points(sa, sb, xs[i], eta0, max_iterations,
+                                                        1e-9 * unit, unit, pair::kFixXi);
+    double xb[3], d[3];
+    sb.point_from(origin, cp.eta, xb, nullptr, nullptr);
+    curve::sub3(xa, xb, d);
+    const double rho = curve::norm3(d);
+    if (!(rho > 64.0 * DBL_EPSILON * unit)) continue;
+    double* h = hist + static_cast<size_t>(i + 1) * hl;
+    h[pair::kHistTag] = pair::kHistTagV1;
+    h[pair::kHistHasNormal] = 1.0;
+    for (int k = 0; k < 3; ++k) h[pair::kHistNormal + k] = d[k] / rho;
+    h[pair::kHistXi] = xs[i];
+    h[pair::kHistEta] = cp.eta;
+  }
   return true;
 }
 

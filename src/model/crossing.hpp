@@ -49,5 +49,16 @@ bool committed_history(const SegmentInfo& a, const SegmentInfo& b, const double*
                        const NodeIndex& used_index, int max_iterations, double* hist,
                        int hist_len);
 
+// The same for a line pair of n integration points (pair/line_contact.hpp;
+// (n + 1) histories of hl doubles): slot 0 as committed_history (the
+// all-angle blend's point element), slot i the normal from B to A at the
+// projection of A's integration point i onto B on the committed geometry
+// (its eta as the search found it, beyond [-1, 1] where the projection lies
+// on B's neighbour). A slot whose axes meet stays fresh. False (hist
+// untouched) where the committed segments cannot be built.
+bool committed_line_histories(const SegmentInfo& a, const SegmentInfo& b, const double* committed,
+                              const NodeIndex& used_index, int max_iterations, int n, int hl,
+                              double* hist);
+
 }  // namespace model
 }  // namespace b2b

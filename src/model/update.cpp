@@ -120,6 +120,9 @@ class Updater {
   void evaluate_line(Item& item, double* K) const;
   Problem evaluate_all();
   Problem crossed_pairs();
+  Problem crossed_line_pair(Item& it);
+  // committed_line_histories of crossed line pairs (their hist_old)
+  std::vector<std::vector<double>> synthetic_line_;
   Problem handovers();
   Problem overflow(const Item& item) const;
   Problem totals_overflow() const;
@@ -505,7 +508,10 @@ Problem Updater::crossed_pairs() {
     Item& it = items_[k];
     const int st = it.res.contact_status;
     if (it.hist_old || (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN)) continue;
-    if (m_.group_pairs_[it.gp].line) continue;  // line pairs: not yet (doc/line-contact.md §9)
+    if (m_.group_pairs_[it.gp].line) {
+      if (Problem pb = crossed_line_pair(it); pb.status) return pb;
+      continue;
+    }
     double d[3];
     for (int i = 0; i < 3; ++i)
       d[i] = it.res.info[B2B_INFO_POINT_A + i] - it.res.info[B2B_INFO_POINT_B + i];
@@ -532,6 +538,37 @@ Problem Updater::crossed_pairs() {
     }
     if (it.res.overflow) return overflow(it);
   }
+  return Problem();
+}
+
+// A line pair new since the commit that moved far enough: every integration
+// point gets the normal of its projection on the committed geometry as its
+// history (committed_line_histories), and the pair is evaluated again; a
+// point on the other side now keeps the committed side, with its signed gap
+// (sign tracking). The same side: the same result as without it.
+Problem Updater::crossed_line_pair(Item& it) {
+  const GroupPair& gp = m_.group_pairs_[it.gp];
+  const double rho = it.res.info[B2B_INFO_GAP] + m_.table_.segment(it.a).radius +
+                     m_.table_.segment(it.b).radius;
+  if (!may_have_crossed(motion_, it.a, it.b, rho)) return Problem();
+  const int hl = gp.hist_len;
+  const int n = static_cast<int>(it.line_hist.size()) / hl - 1;
+  std::vector<double> h(it.line_hist.size());
+  if (!committed_line_histories(m_.table_.segment(it.a), m_.table_.segment(it.b),
+                                m_.committed_coords_.data(), m_.used_index_,
+                                gp.params.max_iterations, n, hl, h.data()))
+    return Problem();
+  synthetic_line_.push_back(std::move(h));
+  it.hist_old = synthetic_line_.back().data();
+  it.hist_old_len = static_cast<int>(synthetic_line_.back().size());
+  double K[pair::kNdof * pair::kNdof];
+  evaluate(it, want_tangent_ ? K : nullptr);
+  it.tangent = -1;
+  if (want_tangent_ && it.res.contact_status == B2B_CONTACT_ACTIVE) {
+    it.tangent = static_cast<int64_t>(tangents_.size());
+    tangents_.insert(tangents_.end(), K, K + pair::kNdof * pair::kNdof);
+  }
+  if (it.res.overflow) return overflow(it);
   return Problem();
 }
 

@@ -19,6 +19,8 @@
  *   - threads: 1 and 2 threads give the same bytes;
  *   - ALL_ANGLE: A turned over B from 90 to 0 degrees at a fixed
  *     penetration, the total normal force continuous in the angle;
+ *   - tunnelling: A moved through B in one step comes back active on its
+ *     committed side, every contact counted crossed (LINE and ALL_ANGLE);
  *   - a line set may replace a line set, not a point set (B2B_ERR_SIZE). */
 #include <float.h>
 #include <math.h>
@@ -354,6 +356,42 @@ START_TEST(all_angle_turn_continuous) {
 }
 END_TEST
 
+START_TEST(tunnelling_parallel_beams_are_caught) {
+  /* A committed above B with an open gap, then moved through B to below it
+   * in one step: line pairs new since the commit, on the other side now.
+   * They must come back active with the committed side (signed gap below
+   * -(r_A + r_B)) and counted as crossed, never open. */
+  for (int type = B2B_CONTACT_TYPE_LINE; type <= B2B_CONTACT_TYPE_ALL_ANGLE; ++type) {
+    b2b_params *p = params_of(type, 0);
+    scene2 s;
+    place(&s, 2 * R + 0.25, -0.5, 2.0, 10, 0.0); /* beyond the near reach: no history */
+    b2b_model *m = model_of(&s, p, B2B_CURVE_HERMITE_NODAL);
+    char msg[B2B_ERRMSG_LEN];
+    update(m, &s, 0);
+    int counts[16];
+    double totals[8];
+    stats(m, counts, totals);
+    ck_assert_int_eq(counts[B2B_COUNT_ACTIVE], 0);
+    ck_assert(b2b_model_commit(m, msg, sizeof msg) == B2B_OK);
+    for (int k = 0; k <= NSEG; ++k) s.x[3 * k + 2] = -(2 * R + 0.01);
+    update(m, &s, 0);
+    stats(m, counts, totals);
+    ck_assert_msg(counts[B2B_COUNT_ACTIVE] > 0 && counts[B2B_COUNT_CROSSED] == counts[B2B_COUNT_ACTIVE],
+                  "type %d: %d active, %d crossed", type, counts[B2B_COUNT_ACTIVE],
+                  counts[B2B_COUNT_CROSSED]);
+    ck_assert_msg(totals[B2B_TOTAL_MIN_GAP] < -2 * R, "min gap %g", totals[B2B_TOTAL_MIN_GAP]);
+    /* the force pushes A back up: A's resultant residual (internal force)
+     * is negative in z, as when it penetrates from above */
+    double f[3 * 64], fz = 0;
+    nodal_forces(m, NSEG + 2 + s.nb, f);
+    for (int k = 0; k <= NSEG; ++k) fz += f[3 * k + 2];
+    ck_assert_msg(fz < 0, "type %d: A's contact residual %g (pulls it through)", type, fz);
+    b2b_model_destroy(&m);
+    b2b_params_destroy(&p);
+  }
+}
+END_TEST
+
 START_TEST(replacement_keeps_the_contact_type) {
   b2b_params *pl = params_of(B2B_CONTACT_TYPE_LINE, 0), *pp = params_of(B2B_CONTACT_TYPE_POINT, 0);
   b2b_params *pl2 = params_of(B2B_CONTACT_TYPE_ALL_ANGLE, 0);
@@ -380,6 +418,7 @@ int main(void) {
   tcase_add_test(tc, friction_slides_across_joints);
   tcase_add_test(tc, commit_revert_restore_threads);
   tcase_add_test(tc, all_angle_turn_continuous);
+  tcase_add_test(tc, tunnelling_parallel_beams_are_caught);
   tcase_add_test(tc, replacement_keeps_the_contact_type);
   suite_add_tcase(s, tc);
   return tst_run_suite(s);
