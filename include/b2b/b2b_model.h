@@ -126,27 +126,28 @@
  *     info[B2B_INFO_END_A] / _END_B name the held node
  *     (doc/contact-element.md section 14).
  *   Line contact: a group pair whose parameter set has "contact_type" LINE or
-    ALL_ANGLE evaluates each pair of its segments with b2b_pair_eval_line's
-    element (A the pair's lower segment in model order; integration along
-    A). A pair's count of integration points is "line_points", or (0) the
-    default rule on A's chord when the pair is first evaluated; it keeps
-    that count while it has a history. Each integration point is owned by
-    the pair of the segment of B it projects onto, so summed over the
-    pairs every point of A is counted once. A point whose projection moves
-    to B's next segment takes its committed history with it (its friction
-    force and normal; doc/line-contact.md section 9). A line pair is one
-    contact: info holds its integrated normal force, energy and
-    dissipation, its smallest gap, B2B_INFO_LINE_POINTS (points carrying
-    force), SLIP if a point slips (else STICK if one sticks), and xi, eta,
-    the points, normal and angle of its deepest point carrying force; its
-    tangential force and slip entries are 0. The stats count line contacts
-    (B2B_COUNT_LINE) and their points (B2B_TOTAL_LINE_POINTS). A pair's
-    parameter set may be replaced only by one of the same contact kind
-    (point, or line/all-angle; else B2B_ERR_SIZE). Not yet for line pairs:
-    end contacts and the crossing check (Crossing below) of ALL_ANGLE's
-    point part and of line pairs that are new since the commit; the
-    interpenetration audit covers them.
-  Handover: a contact that was active at the last commit and whose point
+ *     ALL_ANGLE evaluates each pair of its segments with b2b_pair_eval_line's
+ *     element (A the pair's lower segment in model order; integration along
+ *     A). A pair's count of integration points is "line_points", or (0) the
+ *     default rule on A's chord when the pair is first evaluated; it keeps
+ *     that count while it has a history. Each integration point is owned by
+ *     the pair of the segment of B it projects onto, so summed over the
+ *     pairs every point of A is counted once. A point whose projection moves
+ *     to B's next segment takes its committed history with it (its friction
+ *     force and normal; doc/line-contact.md section 9). A line pair is one
+ *     contact: info holds its integrated normal force, energy and
+ *     dissipation, its smallest gap, B2B_INFO_LINE_POINTS (points carrying
+ *     force), SLIP if a point slips (else STICK if one sticks), and xi, eta,
+ *     the points, normal and angle of its deepest point carrying force; its
+ *     tangential force and slip entries are 0. The stats count line contacts
+ *     (B2B_COUNT_LINE) and their points (B2B_TOTAL_LINE_POINTS). A pair's
+ *     parameter set may be replaced only by one of the same contact kind
+ *     (point, or line/all-angle; else B2B_ERR_SIZE). The crossing check
+ *     (below) gives each point of a line pair new since the commit the
+ *     normal of its projection on the committed geometry. Not yet:
+ *     ALL_ANGLE's point part has no end contact and no handover (its
+ *     friction restarts in stick on the next segment).
+ *   Handover: a contact that was active at the last commit and whose point
  *     now lies outside its pair (the element reports xi or eta outside
  *     [-1, 1)) moves with its committed history to the neighbouring segment
  *     of that beam (b2b_pair_history_handover on the committed geometry),
