@@ -4,8 +4,10 @@
 # links libb2b only (not libb2b_fortran, whose module it replaces):
 #   1. cmake --install the b2b build tree into a scratch prefix;
 #   2. compile <prefix>/<datadir>/b2b/fortran/b2b.f90 (which includes
-#      b2b_constants.inc from its own directory) with those flags;
-#   3. compile consumer_i8.f90 with them, link it with b2b.o and
+#      b2b_constants.inc from its own directory), then its submodules
+#      b2b_curve.f90, b2b_pair.f90, b2b_model.f90, b2b_support.f90, with
+#      those flags;
+#   3. compile consumer_i8.f90 with them, link it with the module's objects and
 #      $(pkg-config --libs b2b) (--static for a static libb2b);
 #   4. run it (it exits non-zero on any failure) without LD_LIBRARY_PATH and,
 #      for a shared libb2b, check with ldd that libb2b comes from the prefix
@@ -99,17 +101,28 @@ run() {
 echo "== 1. install into $prefix"
 run install "$cmake" --install "$build_dir" --prefix "$prefix"
 msrc=$prefix/$datadir/b2b/fortran
-for f in "$msrc/b2b.f90" "$msrc/b2b_constants.inc" "$prefix/$libdir/pkgconfig/b2b.pc"; do
-  if [ ! -f "$f" ]; then
-    echo "FAILED: the install tree lacks $f"
+module_sources="b2b.f90 b2b_curve.f90 b2b_pair.f90 b2b_model.f90 b2b_support.f90"  # module first
+for f in $module_sources b2b_constants.inc; do
+  if [ ! -f "$msrc/$f" ]; then
+    echo "FAILED: the install tree lacks $msrc/$f"
     echo "consumer_fortran_i8: FAILED"
     exit 1
   fi
 done
+if [ ! -f "$prefix/$libdir/pkgconfig/b2b.pc" ]; then
+  echo "FAILED: the install tree lacks $prefix/$libdir/pkgconfig/b2b.pc"
+  echo "consumer_fortran_i8: FAILED"
+  exit 1
+fi
 
 echo "== 2. the module source, compiled by the host with $flags"
-# shellcheck disable=SC2086 # $flags holds several options
-run module "$fc" $flags -Wall -J "$host" -c "$msrc/b2b.f90" -o "$host/b2b.o"
+module_objects=
+for f in $module_sources; do
+  o=$host/${f%.f90}.o
+  # shellcheck disable=SC2086 # $flags holds several options
+  run "module_${f%.f90}" "$fc" $flags -Wall -J "$host" -c "$msrc/$f" -o "$o"
+  module_objects="$module_objects $o"
+done
 
 echo "== 3. the host program, linked with libb2b through pkg-config"
 PKG_CONFIG_PATH=$prefix/$libdir/pkgconfig
@@ -124,7 +137,7 @@ pc_libdir=$(cd "$pc_libdir" && pwd -P)
 echo "  b2b: $c_libs"
 # shellcheck disable=SC2086
 run host "$fc" $flags -Wall -I "$host" -o "$host/consumer_i8" "$source_dir/consumer_i8.f90" \
-  "$host/b2b.o" $c_libs "-Wl,-rpath,$pc_libdir"
+  $module_objects $c_libs "-Wl,-rpath,$pc_libdir"
 
 echo "== 4. run"
 run consumer_i8 "$host/consumer_i8"
