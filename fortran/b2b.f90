@@ -91,6 +91,7 @@ module b2b
   public :: b2b_params_create, b2b_params_destroy, b2b_params_set_real, b2b_params_set_int
   public :: b2b_params_get_real, b2b_params_get_int, b2b_params_finalize
   public :: b2b_params_history_size, b2b_pair_eval, b2b_pair_eval_ends, b2b_pair_history_handover
+  public :: b2b_pair_eval_line, b2b_pair_line_points
   public :: b2b_model_create, b2b_model_destroy, b2b_model_add_beam, b2b_model_set_group_pair
   public :: b2b_model_set_self_contact, b2b_model_set_real, b2b_model_set_int
   public :: b2b_model_finalize, b2b_model_update, b2b_model_contact_count
@@ -329,6 +330,54 @@ module b2b
       real(c_double), intent(inout), contiguous :: residual(:)
       real(c_double), intent(inout), contiguous, target, optional :: tangent(:, :)
       real(c_double), intent(in), contiguous, target, optional :: end_tangents(:, :)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> The line-contact element (Line contact in the C header b2b_pair.h;
+    !> doc/line-contact.md): n_points Gauss points along segment A, each
+    !> projected onto B, a normal law per unit length ("line_penalty"),
+    !> friction per point; with "contact_type" B2B_CONTACT_TYPE_ALL_ANGLE
+    !> blended with the point element by the crossing angle.
+    !>   params, segments, X, radii, end_tangents   as b2b_pair_eval
+    !>   n_points             1 .. B2B_LINE_POINTS_MAX (b2b_pair_line_points
+    !>                        gives the default)
+    !>   hist_old(:), hist_new(:)  (n_points + 1) * b2b_params_history_size
+    !>                        doubles each, distinct arrays (the point
+    !>                        element's history, then each point's)
+    !>   contact_status       B2B_CONTACT_* of the pair
+    !>   line_info(16)        index it with B2B_LINE_INFO_* + 1
+    !>   residual(24), tangent(ldk,24)  as b2b_pair_eval
+    !>   point_info(32,n_points)  each integration point's info (per unit
+    !>                        length), optional
+    module subroutine b2b_pair_eval_line(params, segments, X, radii, n_points, hist_old, &
+                                         hist_new, contact_status, line_info, residual, tangent, &
+                                         point_info, end_tangents, ierr, errmsg)
+      type(b2b_params), intent(in) :: params
+      integer, intent(in), contiguous :: segments(:, :)
+      real(c_double), intent(in), contiguous :: X(:, :)
+      real(c_double), intent(in), contiguous :: radii(:)
+      integer, intent(in) :: n_points
+      real(c_double), intent(in), contiguous, target :: hist_old(:)
+      real(c_double), intent(inout), contiguous, target :: hist_new(:)
+      integer, intent(inout) :: contact_status
+      real(c_double), intent(inout), contiguous :: line_info(:)
+      real(c_double), intent(inout), contiguous :: residual(:)
+      real(c_double), intent(inout), contiguous, target, optional :: tangent(:, :)
+      real(c_double), intent(inout), contiguous, target, optional :: point_info(:, :)
+      real(c_double), intent(in), contiguous, target, optional :: end_tangents(:, :)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> Integration points of a segment of chord length `length` between
+    !> beams of radii radius_a, radius_b: "line_points" if set, else the
+    !> default rule (b2b_pair_line_points in b2b_pair.h).
+    module subroutine b2b_pair_line_points(params, length, radius_a, radius_b, n_points, ierr, &
+                                           errmsg)
+      type(b2b_params), intent(in) :: params
+      real(c_double), intent(in) :: length, radius_a, radius_b
+      integer, intent(inout) :: n_points
       integer, intent(out), optional :: ierr
       character(len=*), intent(out), optional :: errmsg
     end subroutine
