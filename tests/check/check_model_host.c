@@ -155,11 +155,10 @@ static void check_scaled(int base) {
   ok(b2b_model_add_residual_scaled(h.m, eq, ld, base, n_eq, 1.0, f1, msg, sizeof msg), msg);
   ok(b2b_model_add_residual_scaled(h.m, eq, ld, base, n_eq, -1.0, fm, msg, sizeof msg), msg);
   int nonzero = 0;
-  for (int k = 0; k < n_eq; ++k) {
-    ck_assert(f1[k] == f[k] && fm[k] == -f[k]);
-    ck_assert(memcmp(&f1[k], &f[k], sizeof(double)) == 0);
-    nonzero += f[k] != 0.0;
-  }
+  TST_ASSERT_ALL(int, k, 0, n_eq,
+                 f1[k] == f[k] && fm[k] == -f[k] && memcmp(&f1[k], &f[k], sizeof(double)) == 0,
+                 "residual entry %d", k);
+  for (int k = 0; k < n_eq; ++k) nonzero += f[k] != 0.0;
   ck_assert_int_gt(nonzero, 0);
   /* a NaN scale: refused, f untouched */
   memcpy(fm, f, sizeof(double) * n_eq);
@@ -172,7 +171,7 @@ static void check_scaled(int base) {
   double *K = dense(h.m, eq, ld, base, n_eq), *Km = calloc(nn, sizeof(double));
   ok(b2b_model_add_tangent_dense_scaled(h.m, eq, ld, base, n_eq, -1.0, Km, n_eq, msg,
                                         sizeof msg), msg);
-  for (size_t k = 0; k < nn; ++k) ck_assert(Km[k] == -K[k]);
+  TST_ASSERT_ALL(size_t, k, 0, nn, Km[k] == -K[k], "entry %d", (int)k);
   memset(Km, 0, sizeof(double) * nn);
   ok(b2b_model_add_tangent_dense_scaled(h.m, eq, ld, base, n_eq, 1.0, Km, n_eq, msg,
                                         sizeof msg), msg);
@@ -180,7 +179,7 @@ static void check_scaled(int base) {
   memset(Km, 0, sizeof(double) * nn);
   ck_assert_int_eq(b2b_model_add_tangent_dense_scaled(h.m, eq, ld, base, n_eq, INFINITY, Km,
                                                       n_eq, msg, sizeof msg), B2B_ERR_NONFINITE);
-  for (size_t k = 0; k < nn; ++k) ck_assert(Km[k] == 0.0);
+  TST_ASSERT_ALL(size_t, k, 0, nn, Km[k] == 0.0, "entry %d", (int)k);
   /* banded */
   int kl, ku;
   ok(b2b_model_tangent_profile(h.m, eq, ld, base, n_eq, NULL, &kl, &ku, msg, sizeof msg), msg);
@@ -191,11 +190,11 @@ static void check_scaled(int base) {
      msg);
   ok(b2b_model_add_tangent_banded_scaled(h.m, eq, ld, base, n_eq, kl, ku, -1.0, ABm, ldab, msg,
                                          sizeof msg), msg);
-  for (size_t k = 0; k < (size_t)ldab * n_eq; ++k) ck_assert(ABm[k] == -AB[k]);
+  TST_ASSERT_ALL(size_t, k, 0, (size_t)ldab * n_eq, ABm[k] == -AB[k], "entry %d", (int)k);
   ck_assert_int_eq(b2b_model_add_tangent_banded_scaled(h.m, eq, ld, base, n_eq, kl, ku, NAN,
                                                        ABm, ldab, msg, sizeof msg),
                    B2B_ERR_NONFINITE);
-  for (size_t k = 0; k < (size_t)ldab * n_eq; ++k) ck_assert(ABm[k] == -AB[k]);
+  TST_ASSERT_ALL(size_t, k, 0, (size_t)ldab * n_eq, ABm[k] == -AB[k], "entry %d", (int)k);
   printf("scaled assembly (eq_base %d): %d equations, %d nonzero residual entries; residual, "
          "dense and band (kl %d, ku %d) with scale 1 = unscaled, scale -1 = -unscaled, bit "
          "for bit; NaN/inf scale refused, nothing added\n", base, n_eq, nonzero, kl, ku);
@@ -245,11 +244,9 @@ static void check_profile(int base) {
   ck_assert_int_eq(kl, kld);
   ck_assert_int_eq(ku, kud);
   long stored = 0;
-  for (int j = 0; j < n_eq; ++j) {
-    ck_assert_msg(hq[j] == hd[j], "height of column %d: %d, the dense tangent says %d", j, hq[j],
-                  hd[j]);
-    stored += hq[j];
-  }
+  TST_ASSERT_ALL(int, j, 0, n_eq, hq[j] == hd[j], "height of column %d: %d, the dense tangent "
+                 "says %d", j, hq[j], hd[j]);
+  for (int j = 0; j < n_eq; ++j) stored += hq[j];
   /* FEAP's pointers from the heights, with 2 rows to spare in every 5th column */
   int *jp = malloc(sizeof(int) * n_eq);
   for (int j = 0; j < n_eq; ++j) {
@@ -262,25 +259,26 @@ static void check_profile(int base) {
          *al = calloc(nau + 1, sizeof(double));
   ok(b2b_model_add_tangent_profile(h.m, eq, ld, base, n_eq, 1.0, jp, ad, au, al, msg,
                                    sizeof msg), msg);
-  for (int j = 0; j < n_eq; ++j) {
+  int bad_i = -1, bad_j = -1; /* the first entry that differs, in plain C */
+  for (int j = 0; j < n_eq && bad_j < 0; ++j) {
     const int hj = jp[j] - (j ? jp[j - 1] : 0);
-    ck_assert(ad[j] == K[j + (size_t)n_eq * j]);
-    for (int i = 0; i < j; ++i) {
+    if (ad[j] != K[j + (size_t)n_eq * j]) bad_i = bad_j = j;
+    for (int i = 0; i < j && bad_j < 0; ++i) {
       const double up = K[i + (size_t)n_eq * j], low = K[j + (size_t)n_eq * i];
-      if (j - i > hj) {
-        ck_assert(up == 0.0 && low == 0.0);
-        continue;
+      const int in = j - i <= hj;
+      if (in ? (au[jp[j] - j + i] != up || al[jp[j] - j + i] != low) : (up != 0.0 || low != 0.0)) {
+        bad_i = i;
+        bad_j = j;
       }
-      ck_assert_msg(au[jp[j] - j + i] == up, "au (%d, %d)", i, j);
-      ck_assert_msg(al[jp[j] - j + i] == low, "al (%d, %d)", j, i);
     }
   }
+  ck_assert_msg(bad_j < 0, "profile entry (%d, %d) differs from the dense tangent", bad_i, bad_j);
   /* scale -1, al NULL: the upper triangle only, negated */
   double *ad2 = calloc(n_eq, sizeof(double)), *au2 = calloc(nau + 1, sizeof(double));
   ok(b2b_model_add_tangent_profile(h.m, eq, ld, base, n_eq, -1.0, jp, ad2, au2, NULL, msg,
                                    sizeof msg), msg);
-  for (int j = 0; j < n_eq; ++j) ck_assert(ad2[j] == -ad[j]);
-  for (int k = 0; k < nau; ++k) ck_assert(au2[k] == -au[k]);
+  TST_ASSERT_ALL(int, j, 0, n_eq, ad2[j] == -ad[j], "entry %d", (int)j);
+  TST_ASSERT_ALL(int, k, 0, nau, au2[k] == -au[k], "entry %d", (int)k);
   /* one height too small: refused, nothing added */
   int jn = -1;
   for (int j = 0; j < n_eq && jn < 0; ++j)
@@ -301,8 +299,8 @@ static void check_profile(int base) {
   ck_assert_int_eq(b2b_model_add_tangent_profile(h.m, eq, ld, base, n_eq, 1.0, jp, ad2, au2, al2,
                                                  msg, sizeof msg), B2B_ERR_RANGE);
   ck_assert_msg(strstr(msg, "jp") != NULL, "%s", msg);
-  for (int j = 0; j < n_eq; ++j) ck_assert(ad2[j] == 0.0);
-  for (int k = 0; k <= nau; ++k) ck_assert(au2[k] == 0.0 && al2[k] == 0.0);
+  TST_ASSERT_ALL(int, j, 0, n_eq, ad2[j] == 0.0, "entry %d", (int)j);
+  TST_ASSERT_ALL(int, k, 0, (nau) + 1, au2[k] == 0.0 && al2[k] == 0.0, "entry %d", (int)k);
   ck_assert_int_eq(b2b_model_add_tangent_profile(h.m, eq, ld, base, n_eq, NAN, jp, ad2, au2, al2,
                                                  msg, sizeof msg), B2B_ERR_NONFINITE);
   printf("profile (eq_base %d): %d equations, contacts' heights sum %ld, kl %d, ku %d, as the "
@@ -376,7 +374,7 @@ static void check_constrained(int base) {
   double *fm = calloc(n_eq, sizeof(double));
   ok(b2b_model_add_constrained_product(h.m, eq, ld, base, n_eq, du, 4, nn, -1.0, fm, msg,
                                        sizeof msg), msg);
-  for (int e = 0; e < n_eq; ++e) ck_assert(fm[e] == -f[e]);
+  TST_ASSERT_ALL(int, e, 0, n_eq, fm[e] == -f[e], "entry %d", (int)e);
   /* a NaN in a constrained entry of a contact's node: refused, f untouched */
   int nodes[8], bad = -1, axis = -1;
   int count;
