@@ -16,7 +16,12 @@
 !>              _finalize, _update, _contact_count, _get_contact, _add_residual,
 !>              _add_tangent_dense, _add_tangent_banded, _tangent_coo, _commit,
 !>              _revert, _save_size, _save, _restore, _stats
-!>              and the interpenetration audit b2b_model_audit
+!>              and the interpenetration audit b2b_model_audit;
+!>              for a host's solver (b2b_model.h, Assembly, Sparsity,
+!>              Prescribed dofs; doc/host-integration.md): _update_xu,
+!>              _add_residual_scaled, _add_tangent_dense_scaled,
+!>              _add_tangent_banded_scaled, _tangent_profile,
+!>              _add_tangent_profile, _add_constrained_product
 !>
 !> Conventions of the wrappers:
 !>  * Arrays are assumed-shape and must be contiguous (sections are copied in
@@ -100,6 +105,10 @@ module b2b
   public :: b2b_model_revert, b2b_model_save_size, b2b_model_save, b2b_model_restore
   public :: b2b_model_stats
   public :: b2b_model_audit
+  public :: b2b_model_update_xu, b2b_model_add_residual_scaled
+  public :: b2b_model_add_tangent_dense_scaled, b2b_model_add_tangent_banded_scaled
+  public :: b2b_model_tangent_profile, b2b_model_add_tangent_profile
+  public :: b2b_model_add_constrained_product
 
   !> Contact parameters (b2b_params in C): an opaque handle, null until
   !> b2b_params_create. Set options by key, finalize, then pass it to
@@ -445,6 +454,11 @@ module b2b
     !> Adds a beam: nodes(:) the host's node numbers (1-based) along it, closed
     !> .true. for a ring (do not repeat the first node), radius > 0, kind
     !> B2B_CURVE_*, group >= 0 (the host's contact group). beam: its number (1, 2, ...).
+    !> Groups are labels, passed to the library as given (not shifted like
+    !> beams, nodes and segments): no array is indexed by them, any integer
+    !> >= 0 will do, and messages print them as given. Number them from 1
+    !> like everything else in Fortran (groups 1 and 2, and
+    !> b2b_model_set_group_pair(model, 1, 2, ...)); 0 is a group too.
     module subroutine b2b_model_add_beam(model, nodes, closed, radius, kind, group, beam, ierr, &
                                          errmsg)
       type(b2b_model), intent(inout) :: model
@@ -506,9 +520,10 @@ module b2b
     end subroutine
 
     !> One Newton iteration: x(ldx, n) the current coordinates of the host's
-    !> nodes (rows 1..3: x, y, z; ldx = size(x, 1) >= 3, so FEAP's x(ndm, numnp)
-    !> works as is), n = size(x, 2) >= n_nodes. want_tangent (default .true.):
-    !> .false. skips the tangents.
+    !> nodes (rows 1..3: x, y, z; ldx = size(x, 1) >= 3), n = size(x, 2) >=
+    !> n_nodes. want_tangent (default .true.): .false. skips the tangents.
+    !> Current, not reference: FEAP's x(ndm, numnp) is the reference geometry;
+    !> a host that keeps x and u(ndf, numnp) apart calls b2b_model_update_xu.
     module subroutine b2b_model_update(model, x, want_tangent, ierr, errmsg)
       type(b2b_model), intent(inout) :: model
       real(c_double), intent(in), contiguous :: x(:, :)
@@ -658,6 +673,114 @@ module b2b
       integer, intent(inout), optional :: pairs(:, :)
       real(c_double), intent(inout), optional :: overlap(:)
       integer, intent(inout), optional :: reasons(:)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> One Newton iteration from reference coordinates and displacements: the
+    !> current coordinates are x + u, read from rows 1..3 of x(ldx, n) and of
+    !> u(ldu, n2) (FEAP: x(ndm, numnp) with ndm = 3, u(ndf, numnp) with
+    !> ndf >= 3, e.g. u(:, :, 1); rows beyond 3 are not read), n and n2 >=
+    !> n_nodes. The result is b2b_model_update(x + u) bit for bit. A
+    !> non-finite u is B2B_ERR_NONFINITE naming node and axis; x + u beyond
+    !> B2B_COORD_MAX is B2B_ERR_RANGE. want_tangent as b2b_model_update.
+    module subroutine b2b_model_update_xu(model, x, u, want_tangent, ierr, errmsg)
+      type(b2b_model), intent(inout) :: model
+      real(c_double), intent(in), contiguous :: x(:, :), u(:, :)
+      logical, intent(in), optional :: want_tangent
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> f(e) += scale * the contacts' residuals (b2b_model_add_residual
+    !> scaled). The residual is the contact part of the internal force
+    !> (gradient of the contact potential): a host whose right-hand side is
+    !> F_ext - F_int, as FEAP's, passes scale = -1. A non-finite scale is
+    !> B2B_ERR_NONFINITE, nothing added.
+    module subroutine b2b_model_add_residual_scaled(model, eq, scale, f, ierr, errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: eq(:, :)
+      real(c_double), intent(in) :: scale
+      real(c_double), intent(inout), contiguous :: f(:)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> K(e_r, e_c) += scale * the contacts' tangents (b2b_model_add_tangent_dense).
+    module subroutine b2b_model_add_tangent_dense_scaled(model, eq, scale, K, ierr, errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: eq(:, :)
+      real(c_double), intent(in) :: scale
+      real(c_double), intent(inout), contiguous :: K(:, :)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> scale * the contacts' tangents into dgbsv's band storage AB
+    !> (b2b_model_add_tangent_banded).
+    module subroutine b2b_model_add_tangent_banded_scaled(model, eq, kl, ku, scale, AB, ierr, &
+                                                         errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: eq(:, :)
+      integer, intent(in) :: kl, ku
+      real(c_double), intent(in) :: scale
+      real(c_double), intent(inout), contiguous :: AB(:, :)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> The contacts' coupling pattern in the host's equations (1-based), to
+    !> size a profile or band before assembling; n_eq = size(heights).
+    !>   heights(j)  j - (the smallest equation i <= j that a contact couples
+    !>               with j, as K(i, j) or K(j, i)), 0 if none: FEAP's column
+    !>               heights of the contacts alone (its jp before nwprof)
+    !>   kl, ku      the band: largest e_r - e_c and e_c - e_r of a coupled entry
+    !> Contact couples dofs outside the element connectivity, across beams,
+    !> and the pattern changes as contacts come and go: query it after every
+    !> update, merge with the host's own (max), and re-size and re-factor
+    !> when it grew. No tangent needed (want_tangent may be .false.).
+    module subroutine b2b_model_tangent_profile(model, eq, heights, kl, ku, ierr, errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: eq(:, :)
+      integer, intent(inout), contiguous :: heights(:)
+      integer, intent(inout), optional :: kl, ku
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> scale * the contacts' tangents into FEAP's profile storage with its
+    !> pointer array jp(n_eq) (jp(1) = 0, jp(j) = jp(j-1) + height of column j):
+    !> K(j, j) into ad(j), K(i, j), i < j, into au(jp(j) - j + i + 1) and
+    !> K(j, i) into al(jp(j) - j + i + 1), as FEAP's dasble. n_eq = size(ad)
+    !> = size(jp); au (and al) hold at least jp(n_eq) entries. al absent: the
+    !> upper triangle only (a symmetric solver; with friction the tangent is
+    !> not symmetric). An entry outside the profile is B2B_ERR_RANGE naming
+    !> both equations, nothing added.
+    module subroutine b2b_model_add_tangent_profile(model, eq, scale, jp, ad, au, al, ierr, &
+                                                    errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: eq(:, :)
+      real(c_double), intent(in) :: scale
+      integer, intent(in) :: jp(:)
+      real(c_double), intent(inout), contiguous :: ad(:), au(:)
+      real(c_double), intent(inout), contiguous, target, optional :: al(:)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> f(e) += scale * sum_c K(e, c) du_c over the free rows e and the
+    !> constrained columns c (eq <= 0) of every contact: the coupling of the
+    !> free dofs to prescribed increments, which the assembly helpers skip.
+    !> du(ldu, n): node k's increments in du(1:3, k) (ldu >= 3, n >= n_nodes);
+    !> only the entries of constrained dofs are read. n_eq = size(f). A host
+    !> with right-hand side F_ext - F_int passes scale = -1
+    !> (rhs_free -= K_fc du_c).
+    module subroutine b2b_model_add_constrained_product(model, eq, du, scale, f, ierr, errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: eq(:, :)
+      real(c_double), intent(in), contiguous :: du(:, :)
+      real(c_double), intent(in) :: scale
+      real(c_double), intent(inout), contiguous :: f(:)
       integer, intent(out), optional :: ierr
       character(len=*), intent(out), optional :: errmsg
     end subroutine

@@ -244,6 +244,106 @@ submodule (b2b) model_layer
       integer(c_int), value :: errmsg_len
       integer(c_int) :: st
     end function
+    function c_b2b_model_update_xu(model, x, ldx, u, ldu, n_cols, want_tangent, errmsg, &
+                                   errmsg_len) bind(C, name='b2b_model_update_xu') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      real(c_double), intent(in) :: x(*), u(*)
+      integer(c_int), value :: ldx, ldu, n_cols, want_tangent
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_residual_scaled(model, eq, ldeq, eq_base, n_eq, scale, f, errmsg, &
+                                             errmsg_len) &
+        bind(C, name='b2b_model_add_residual_scaled') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      real(c_double), value :: scale
+      real(c_double), intent(inout) :: f(*)
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_tangent_dense_scaled(model, eq, ldeq, eq_base, n_eq, scale, K, ldk, &
+                                                  errmsg, errmsg_len) &
+        bind(C, name='b2b_model_add_tangent_dense_scaled') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      real(c_double), value :: scale
+      real(c_double), intent(inout) :: K(*)
+      integer(c_int), value :: ldk
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_tangent_banded_scaled(model, eq, ldeq, eq_base, n_eq, kl, ku, &
+                                                   scale, AB, ldab, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_add_tangent_banded_scaled') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq, kl, ku
+      real(c_double), value :: scale
+      real(c_double), intent(inout) :: AB(*)
+      integer(c_int), value :: ldab
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_tangent_profile(model, eq, ldeq, eq_base, n_eq, heights, kl, ku, &
+                                         errmsg, errmsg_len) &
+        bind(C, name='b2b_model_tangent_profile') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      integer(c_int), intent(inout) :: heights(*)
+      integer(c_int), intent(inout) :: kl, ku
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_tangent_profile(model, eq, ldeq, eq_base, n_eq, scale, jp, ad, au, &
+                                             al, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_add_tangent_profile') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      real(c_double), value :: scale
+      integer(c_int), intent(in) :: jp(*)
+      real(c_double), intent(inout) :: ad(*), au(*)
+      type(c_ptr), value :: al
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_add_constrained_product(model, eq, ldeq, eq_base, n_eq, du, ldu, &
+                                                 n_cols, scale, f, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_add_constrained_product') result(st)
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value :: model
+      integer(c_int), intent(in) :: eq(*)
+      integer(c_int), value :: ldeq, eq_base, n_eq
+      real(c_double), intent(in) :: du(*)
+      integer(c_int), value :: ldu, n_cols
+      real(c_double), value :: scale
+      real(c_double), intent(inout) :: f(*)
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
   end interface
 
 contains
@@ -731,5 +831,235 @@ contains
     ceq = 0
     ceq(1:size(eq, 1), 1:size(eq, 2)) = int(eq, c_int)
   end subroutine
+
+  module procedure b2b_model_update_xu
+    character(len=*), parameter :: me = 'b2b_model_update_xu'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, want
+    real(c_double) :: dummy(3)
+    logical :: ok
+    call check_ints(me, [character(len=9) :: 'size(x,1)', 'size(x,2)', 'size(u,1)', &
+                    'size(u,2)'], [size(x, 1), size(x, 2), size(u, 1), size(u, 2)], ok, ierr, &
+                    errmsg)
+    if (.not. ok) return
+    want = 1
+    if (present(want_tangent)) want = c_flag(want_tangent)
+    buf = c_null_char
+    ! one column count for both: the smaller (the library wants n_nodes of each)
+    if (size(x) > 0 .and. size(u) > 0) then
+      st = c_b2b_model_update_xu(model%ptr, x, int(size(x, 1), c_int), u, &
+                                 int(size(u, 1), c_int), int(min(size(x, 2), size(u, 2)), c_int), &
+                                 want, buf, int(size(buf), c_int))
+    else
+      dummy = 0
+      st = c_b2b_model_update_xu(model%ptr, dummy, int(max(size(x, 1), 0), c_int), dummy, &
+                                 int(max(size(u, 1), 0), c_int), 0_c_int, want, buf, &
+                                 int(size(buf), c_int))
+    end if
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_add_residual_scaled
+    character(len=*), parameter :: me = 'b2b_model_add_residual_scaled'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int), allocatable :: ceq(:, :)
+    real(c_double) :: dummy(1)
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=7) :: 'size(f)'], [size(f)], ok, ierr, errmsg)
+    if (.not. ok) return
+    call c_equations(eq, ceq)
+    buf = c_null_char
+    if (size(f) > 0) then
+      st = c_b2b_model_add_residual_scaled(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                           int(size(f), c_int), scale, f, buf, &
+                                           int(size(buf), c_int))
+    else
+      st = c_b2b_model_add_residual_scaled(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                           0_c_int, scale, dummy, buf, int(size(buf), c_int))
+    end if
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_add_tangent_dense_scaled
+    character(len=*), parameter :: me = 'b2b_model_add_tangent_dense_scaled'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int), allocatable :: ceq(:, :)
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=9) :: 'size(K,1)', 'size(K,2)'], [size(K, 1), size(K, 2)], &
+                    ok, ierr, errmsg)
+    if (.not. ok) return
+    call c_equations(eq, ceq)
+    buf = c_null_char
+    st = c_b2b_model_add_tangent_dense_scaled(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                              int(size(K, 2), c_int), scale, K, &
+                                              int(size(K, 1), c_int), buf, int(size(buf), c_int))
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_add_tangent_banded_scaled
+    character(len=*), parameter :: me = 'b2b_model_add_tangent_banded_scaled'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int), allocatable :: ceq(:, :)
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=10) :: 'kl', 'ku', 'size(AB,1)', 'size(AB,2)'], &
+                    [kl, ku, size(AB, 1), size(AB, 2)], ok, ierr, errmsg)
+    if (.not. ok) return
+    call c_equations(eq, ceq)
+    buf = c_null_char
+    st = c_b2b_model_add_tangent_banded_scaled(model%ptr, ceq, int(size(eq, 1), c_int), &
+                                               1_c_int, int(size(AB, 2), c_int), &
+                                               int(kl, c_int), int(ku, c_int), scale, AB, &
+                                               int(size(AB, 1), c_int), buf, &
+                                               int(size(buf), c_int))
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_tangent_profile
+    character(len=*), parameter :: me = 'b2b_model_tangent_profile'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, ckl, cku
+    integer(c_int), allocatable :: ceq(:, :), ch(:)
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=13) :: 'size(heights)'], [size(heights)], ok, ierr, &
+                    errmsg)
+    if (.not. ok) return
+    call c_equations(eq, ceq)
+    allocate (ch(max(size(heights), 1)))
+    ch = 0
+    ckl = 0
+    cku = 0
+    buf = c_null_char
+    st = c_b2b_model_tangent_profile(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                     int(size(heights), c_int), ch, ckl, cku, buf, &
+                                     int(size(buf), c_int))
+    if (st == B2B_OK) then
+      heights = int(ch(1:size(heights)))
+      if (present(kl)) kl = int(ckl)
+      if (present(ku)) ku = int(cku)
+    end if
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_add_tangent_profile
+    character(len=*), parameter :: me = 'b2b_model_add_tangent_profile'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int), allocatable :: ceq(:, :), cjp(:)
+    real(c_double), target :: dummy(1)
+    type(c_ptr) :: pal
+    integer :: need
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=8) :: 'size(ad)'], [size(ad)], ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_int_array(me, 'jp', jp, ok, ierr, errmsg)
+    if (.not. ok) return
+    if (size(jp) /= size(ad)) then
+      call finish_size(me, 'jp', shape(jp), shape(ad), ierr, errmsg)
+      return
+    end if
+    ! The library cannot see the lengths of au and al: the pointer of the
+    ! last equation is how many it may touch (a bad jp is its to report).
+    need = 0
+    if (size(jp) > 0) need = jp(size(jp))
+    if (size(au) < need) then
+      call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': au has ' // &
+                       trim(int_text(size(au))) // ' entries, the profile jp(n_eq) = ' // &
+                       trim(int_text(need)), ierr, errmsg)
+      return
+    end if
+    if (present(al)) then
+      if (size(al) < need) then
+        call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': al has ' // &
+                         trim(int_text(size(al))) // ' entries, the profile jp(n_eq) = ' // &
+                         trim(int_text(need)), ierr, errmsg)
+        return
+      end if
+    end if
+    call c_equations(eq, ceq)
+    allocate (cjp(max(size(jp), 1)))
+    cjp = 0
+    cjp(1:size(jp)) = int(jp, c_int)
+    buf = c_null_char
+    if (size(ad) == 0) then
+      st = c_b2b_model_add_tangent_profile(model%ptr, ceq, int(size(eq, 1), c_int), 1_c_int, &
+                                           0_c_int, scale, cjp, dummy, dummy, c_null_ptr, buf, &
+                                           int(size(buf), c_int))
+    else
+      ! absent al: NULL (no lower triangle); al of no entries (a diagonal
+      ! profile) still needs an address
+      pal = c_null_ptr
+      if (present(al)) then
+        pal = c_loc(dummy)
+        if (size(al) > 0) pal = c_loc(al)
+      end if
+      st = add_profile(pal)
+    end if
+    call finish(me, st, buf, ierr, errmsg)
+
+  contains
+
+    integer(c_int) function add_profile(pal_address)
+      type(c_ptr), intent(in) :: pal_address
+      if (size(au) > 0) then
+        add_profile = c_b2b_model_add_tangent_profile(model%ptr, ceq, int(size(eq, 1), c_int), &
+                                                      1_c_int, int(size(ad), c_int), scale, &
+                                                      cjp, ad, au, pal_address, buf, &
+                                                      int(size(buf), c_int))
+      else
+        add_profile = c_b2b_model_add_tangent_profile(model%ptr, ceq, int(size(eq, 1), c_int), &
+                                                      1_c_int, int(size(ad), c_int), scale, &
+                                                      cjp, ad, dummy, pal_address, buf, &
+                                                      int(size(buf), c_int))
+      end if
+    end function
+
+  end procedure
+
+  module procedure b2b_model_add_constrained_product
+    character(len=*), parameter :: me = 'b2b_model_add_constrained_product'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int), allocatable :: ceq(:, :)
+    real(c_double) :: dummy(3)
+    logical :: ok
+    call check_equations(me, model, eq, ok, ierr, errmsg)
+    if (.not. ok) return
+    call check_ints(me, [character(len=10) :: 'size(f)', 'size(du,1)', 'size(du,2)'], &
+                    [size(f), size(du, 1), size(du, 2)], ok, ierr, errmsg)
+    if (.not. ok) return
+    call c_equations(eq, ceq)
+    buf = c_null_char
+    dummy = 0
+    if (size(du) > 0 .and. size(f) > 0) then
+      st = c_b2b_model_add_constrained_product(model%ptr, ceq, int(size(eq, 1), c_int), &
+                                               1_c_int, int(size(f), c_int), du, &
+                                               int(size(du, 1), c_int), int(size(du, 2), c_int), &
+                                               scale, f, buf, int(size(buf), c_int))
+    else if (size(du) > 0) then
+      st = c_b2b_model_add_constrained_product(model%ptr, ceq, int(size(eq, 1), c_int), &
+                                               1_c_int, 0_c_int, du, int(size(du, 1), c_int), &
+                                               int(size(du, 2), c_int), scale, dummy, buf, &
+                                               int(size(buf), c_int))
+    else
+      st = c_b2b_model_add_constrained_product(model%ptr, ceq, int(size(eq, 1), c_int), &
+                                               1_c_int, int(size(f), c_int), dummy, &
+                                               int(max(size(du, 1), 0), c_int), 0_c_int, &
+                                               scale, dummy, buf, int(size(buf), c_int))
+    end if
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
 
 end submodule model_layer

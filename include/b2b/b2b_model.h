@@ -13,7 +13,8 @@
  *   groups that may touch), b2b_model_set_self_contact, b2b_model_set_real /
  *   _set_int (options)
  *   b2b_model_finalize(n_nodes)
- *   per load step:  per Newton iteration:  b2b_model_update(x)
+ *   per load step:  per Newton iteration:  b2b_model_update(x), or
+ *                                          b2b_model_update_xu(x, u)
  *                                          b2b_model_contact_count / _get_contact,
  *                                          or the assembly helpers
  *                   converged: b2b_model_commit     failed: b2b_model_revert
@@ -28,7 +29,9 @@
  * A beam is a chain of the host's node numbers (0-based in C), open or closed
  * (a ring: the last node joins the first; do not repeat it), with a circular
  * cross-section radius r > 0, a curve kind (B2B_CURVE_*) and a contact group
- * (an int >= 0). Its segments are those of b2b_beam_segment_count /
+ * (an int >= 0; a label: no array is indexed by it, so any numbering the
+ * host likes, e.g. from 1 in Fortran; messages print it as given). Its
+ * segments are those of b2b_beam_segment_count /
  * b2b_beam_segment_patch; open ends use B2B_END_REFLECT. A beam needs at
  * least 2 nodes (3 if closed); a node may not appear twice in one beam.
  * Beams may share host nodes (a frame): segments whose patches share a host
@@ -91,8 +94,23 @@
  * threads) fails with B2B_ERR_NOMEM and leaves the model unchanged.
  * x holds the current coordinates of all host nodes: node k at
  * x[ldx*k + 0..2] (a 3 x n_cols column-major array with leading dimension
- * ldx >= 3, so FEAP's x(ndm, numnp) works as is); n_cols >= n_nodes. Only
- * nodes of beams are read (each must be finite and within B2B_COORD_MAX).
+ * ldx >= 3); n_cols >= n_nodes. Only nodes of beams are read (each must be
+ * finite and within B2B_COORD_MAX). The current coordinates, not the
+ * reference ones: FEAP's x(ndm, numnp) is the reference geometry, and a
+ * host that keeps reference coordinates and displacements apart, as FEAP
+ * does (x(ndm, numnp), u(ndf, numnp)), calls b2b_model_update_xu instead.
+ *
+ * b2b_model_update_xu(x, ldx, u, ldu, n_cols, ...): the same update with the
+ * current coordinates x + u, node k's reference coordinates at
+ * x[ldx*k + 0..2] and its displacements at u[ldu*k + 0..2] (ldx, ldu >= 3:
+ * FEAP's x(ndm, numnp) with ndm = 3 and u(ndf, numnp) with ndf >= 3, whose
+ * rotations or other dofs beyond the first 3 are not read); n_cols >=
+ * n_nodes for both. Each sum is formed as the coordinate is read (one
+ * rounding, x[.] + u[.]), so the result is b2b_model_update on the array
+ * x + u bit for bit. Checks as b2b_model_update: a non-finite or too large
+ * x is B2B_ERR_NONFINITE / B2B_ERR_RANGE ("coordinate"), a non-finite u
+ * B2B_ERR_NONFINITE naming the node and axis ("displacement"), a sum beyond
+ * B2B_COORD_MAX B2B_ERR_RANGE ("current coordinate x + u").
  *   Elements: before any search, every element of every beam is checked in
  *     O(n): two consecutive nodes of a beam that coincide (a zero-length
  *     element, wherever it is) are B2B_ERR_COINCIDENT, naming the beam and
@@ -184,6 +202,18 @@
  *              columns of -1 slots are zero). Any output may be NULL.
  *
  * Assembly (the translational dofs of the host's nodes)
+ *   Sign: the residual is the contact contribution to the host's internal
+ *   force vector, the gradient of the contact potential with respect to the
+ *   coordinates (b2b_pair.h: it pushes the beams apart, so on a node pressed
+ *   against another beam it points towards that beam, as an internal force
+ *   does), and the tangent its derivative, to be added to the host's
+ *   stiffness as it is. A host whose Newton right-hand side is
+ *   F_int - F_ext adds both as they are (scale 1, the unscaled functions);
+ *   a host whose right-hand side is F_ext - F_int (FEAP's, and most
+ *   residual-form codes') adds the residual with scale -1 and the tangent
+ *   with scale 1: the _scaled functions add scale * (the contacts' arrays)
+ *   (scale = 1 gives the unscaled result bit for bit, scale = -1 exactly its
+ *   negative; a non-finite scale is B2B_ERR_NONFINITE, nothing added).
  *   eq: an int array eq[ldeq*k + i] (i = 0, 1, 2 for x, y, z of node k),
  *   ldeq >= 3 (so an id(6, numnp) of a 6-dof beam code works as is): the
  *   host's equation numbers, numbered from eq_base (> INT_MIN, else
@@ -203,6 +233,69 @@
  *                        numbering (duplicates are to be summed). With
  *                        rows == NULL only *nnz is set (the size query);
  *                        else capacity must be >= that count.
+ *   add_tangent_profile: FEAP's profile (skyline) storage, described below.
+ *
+ * Sparsity: contact couples dofs that no element of the host connects: the
+ *   nodes of two segments that touch, on two different beams (or far apart
+ *   on one beam), with friction in a non-symmetric block. So the contact
+ *   tangent does not fit a profile, band or CSR structure computed from the
+ *   host's element connectivity, and its pattern changes as contacts close,
+ *   open and slide on to other segments. b2b_model_tangent_profile gives
+ *   the pattern of the last update (every pair of unconstrained dofs of an
+ *   active contact, also where a value is 0; no tangent needed):
+ *     heights[j] (n_eq ints, j = 0 .. n_eq-1: equation j + eq_base):
+ *       j - (the smallest row i <= j with (i, j) or (j, i) coupled), 0 if
+ *       none: FEAP's column heights of the contacts alone, the input of its
+ *       pointer sums (jp(1) = 0, jp(j) = jp(j-1) + height(j)); the profile
+ *       is symmetric in structure (al and au share jp)
+ *     *kl, *ku: the largest r - c and c - r of a coupled entry (r, c): the
+ *       band dgbsv needs (0, 0 without contacts)
+ *   (any of the three may be NULL). A host merges them with its own
+ *   (height = max(host's, contacts'); kl, ku likewise), after EVERY update:
+ *   when the pattern has grown it re-sizes its structure and re-factors
+ *   (a band or profile solver refactors every iteration anyway; a sparse
+ *   direct solver redoes its symbolic analysis), else the assembly helpers
+ *   refuse the entries outside it with B2B_ERR_RANGE, adding nothing. To
+ *   keep re-sizing rare, a host may size for the contacts' pattern plus
+ *   what its own elements need once, and grow only. tangent_coo's size
+ *   query and entries give the same pattern for a CSR or COO host.
+ *
+ * Profile (skyline) storage, FEAP's: jp (n_eq ints) the pointer array as
+ *   FEAP's profil/nwprof leave it, passed as is from C or Fortran: jp for
+ *   the first equation is 0, and each next one adds that column's height
+ *   (between 0 and the number of equations before it; else B2B_ERR_RANGE
+ *   naming the equation). In 0-based C terms, for 0 <= i < j < n_eq:
+ *     K(j, j) is added to ad[j]
+ *     K(i, j) to au[jp[j] - j + i]  (column j of the upper triangle, rows
+ *                                    top down, its last entry K(j-1, j) at
+ *                                    au[jp[j] - 1]),
+ *     K(j, i) to al[jp[j] - j + i]  (row j of the lower triangle, where its
+ *                                    transpose is in au)
+ *   (Fortran, 1-based: ad(j), au(jp(j) - j + i + 1), al(jp(j) - j + i + 1),
+ *   as FEAP's dasble adds them). al = NULL adds no lower triangle: for a
+ *   host with a symmetric profile solver, which then gets only the upper
+ *   triangle of a tangent that friction makes non-symmetric (info
+ *   B2B_INFO_SYMMETRIC = 0); pass al with friction. au and al hold jp of
+ *   the last equation doubles (not checked: the library cannot see their
+ *   length; the Fortran wrapper checks it). An entry of a contact outside
+ *   the profile (i < j - height(j)) is B2B_ERR_RANGE naming both equations,
+ *   with nothing added.
+ *
+ * Prescribed dofs: the assembly helpers skip constrained equations (eq <
+ *   eq_base): rows and columns. A host that prescribes a displacement
+ *   increment du_c on constrained dofs (a support moved by a load step)
+ *   needs the coupling of the free dofs to them, K_fc du_c, which it would
+ *   otherwise never see: b2b_model_add_constrained_product adds
+ *     f[e - eq_base] += scale * sum_c K(e, c) du_c
+ *   over every free row e and constrained column c of every contact, du
+ *   given per host node like the coordinates (node k's at du[ldu*k +
+ *   0..2], ldu >= 3, n_cols >= n_nodes; only the entries of the contacts'
+ *   constrained dofs are read, each must be finite: else B2B_ERR_NONFINITE
+ *   naming the node and axis). The host's correction of the first
+ *   iteration of a step with prescribed increments: rhs_free -= K_fc du_c,
+ *   i.e. scale -1 with a right-hand side F_ext - F_int (the contact part;
+ *   its own elements' part as it does for them), then the free dofs solve
+ *   K_ff du_f = rhs_free, and the next update sees x + u with both.
  *
  * Commit, revert, restart
  *   commit: the state of the last update becomes the committed one (its
@@ -241,7 +334,7 @@
  * overflows, or whose terms make the model's totals overflow: the model is
  * then unchanged), B2B_ERR_NONFINITE (radius, coordinates, option values),
  * B2B_ERR_SIZE (a beam of too few nodes, ldx < 3, n_cols < n_nodes, ldeq < 3,
- * ldk, ldab, capacity, a replacement parameter set of another history
+ * ldu, ldk, ldab, capacity, a replacement parameter set of another history
  * length, a restore size < 0, more than 2^29 segments at finalize, more
  * broad-phase pairs than
  * "max_candidates"), B2B_ERR_NOMEM (memory exhausted, in any thread), B2B_ERR_UNKNOWN_KIND (curve kind), B2B_ERR_UNKNOWN_KEY, and a
@@ -324,6 +417,10 @@ B2B_EXPORT int b2b_model_finalize(b2b_model *model, int n_nodes, char *errmsg, i
 
 B2B_EXPORT int b2b_model_update(b2b_model *model, const double *x, int ldx, int n_cols,
                                 int want_tangent, char *errmsg, int errmsg_len);
+/* Update from reference coordinates x and displacements u: current x + u. */
+B2B_EXPORT int b2b_model_update_xu(b2b_model *model, const double *x, int ldx, const double *u,
+                                   int ldu, int n_cols, int want_tangent, char *errmsg,
+                                   int errmsg_len);
 
 B2B_EXPORT int b2b_model_contact_count(const b2b_model *model, int *n, char *errmsg,
                                        int errmsg_len);
@@ -344,6 +441,33 @@ B2B_EXPORT int b2b_model_tangent_coo(const b2b_model *model, const int *eq, int 
                                      int eq_base, int n_eq, int *nnz, int *rows, int *cols,
                                      double *values, int capacity, char *errmsg,
                                      int errmsg_len);
+/* scale * (the contacts' residual / tangent): see Assembly, Sign. */
+B2B_EXPORT int b2b_model_add_residual_scaled(const b2b_model *model, const int *eq, int ldeq,
+                                             int eq_base, int n_eq, double scale, double *f,
+                                             char *errmsg, int errmsg_len);
+B2B_EXPORT int b2b_model_add_tangent_dense_scaled(const b2b_model *model, const int *eq,
+                                                  int ldeq, int eq_base, int n_eq, double scale,
+                                                  double *K, int ldk, char *errmsg,
+                                                  int errmsg_len);
+B2B_EXPORT int b2b_model_add_tangent_banded_scaled(const b2b_model *model, const int *eq,
+                                                   int ldeq, int eq_base, int n_eq, int kl,
+                                                   int ku, double scale, double *AB, int ldab,
+                                                   char *errmsg, int errmsg_len);
+/* The contacts' pattern: FEAP column heights and band widths (Sparsity). */
+B2B_EXPORT int b2b_model_tangent_profile(const b2b_model *model, const int *eq, int ldeq,
+                                         int eq_base, int n_eq, int *heights, int *kl, int *ku,
+                                         char *errmsg, int errmsg_len);
+/* scale * tangent into FEAP's profile storage ad, au, al (al may be NULL). */
+B2B_EXPORT int b2b_model_add_tangent_profile(const b2b_model *model, const int *eq, int ldeq,
+                                             int eq_base, int n_eq, double scale,
+                                             const int *jp, double *ad, double *au, double *al,
+                                             char *errmsg, int errmsg_len);
+/* f += scale * K(free, constrained) du_c (Prescribed dofs). */
+B2B_EXPORT int b2b_model_add_constrained_product(const b2b_model *model, const int *eq,
+                                                 int ldeq, int eq_base, int n_eq,
+                                                 const double *du, int ldu, int n_cols,
+                                                 double scale, double *f, char *errmsg,
+                                                 int errmsg_len);
 
 B2B_EXPORT int b2b_model_commit(b2b_model *model, char *errmsg, int errmsg_len);
 B2B_EXPORT int b2b_model_revert(b2b_model *model, char *errmsg, int errmsg_len);

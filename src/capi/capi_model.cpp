@@ -115,6 +115,23 @@ int report_model_problem(const Reporter& r, const b2b_model* model, const md::Pr
     case W::Band:
       return r.fail(pb.status, "a contact couples equations %d and %d, outside the band (kl, "
                     "ku): widen the band", pb.row, pb.col);
+    case W::Displacement:
+      return r.fail(pb.status, "node %d has a non-finite %c displacement (%g)", pb.node + o,
+                    kAxis[pb.axis], pb.value);
+    case W::CurrentCoordinate:
+      return r.fail(pb.status, "node %d: its current %c coordinate x + u (%g) is beyond "
+                    "B2B_COORD_MAX", pb.node + o, kAxis[pb.axis], pb.value);
+    case W::Profile:
+      return r.fail(pb.status, "a contact couples equations %d and %d, outside the profile jp: "
+                    "raise column %d's height (b2b_model_tangent_profile gives the heights the "
+                    "contacts need)", pb.row, pb.col, pb.row > pb.col ? pb.row : pb.col);
+    case W::ProfilePointer:
+      return r.fail(pb.status, "jp is not a profile pointer array at equation %d (jp there is "
+                    "%.0f): jp starts at 0 for the first equation and grows by a column height "
+                    "between 0 and the number of equations before it", pb.row, pb.value);
+    case W::Increment:
+      return r.fail(pb.status, "node %d has a non-finite prescribed %c increment du (%g)",
+                    pb.node + o, kAxis[pb.axis], pb.value);
     case W::None:
       break;
   }
@@ -325,6 +342,26 @@ int b2b_model_update(b2b_model* model, const double* x, int ldx, int n_cols, int
     if (want_tangent != 0 && want_tangent != 1)
       return r.fail(B2B_ERR_RANGE, "want_tangent is %d (0 or 1)", want_tangent);
     const md::Problem pb = model->m.update(x, ldx, want_tangent == 1);
+    if (pb.status) return report_model_problem(r, model, pb);
+    return B2B_OK;
+  });
+}
+
+int b2b_model_update_xu(b2b_model* model, const double* x, int ldx, const double* u, int ldu,
+                        int n_cols, int want_tangent, char* errmsg, int errmsg_len) {
+  const Reporter r("b2b_model_update_xu", errmsg, errmsg_len);
+  return guarded(r, [&]() -> int {
+    if (int st = check_model_finalized(r, model)) return st;
+    if (x == nullptr) return r.fail(B2B_ERR_NULL, "x is NULL");
+    if (u == nullptr) return r.fail(B2B_ERR_NULL, "u is NULL");
+    if (ldx < 3) return r.fail(B2B_ERR_SIZE, "ldx is %d (>= 3)", ldx);
+    if (ldu < 3) return r.fail(B2B_ERR_SIZE, "ldu is %d (>= 3)", ldu);
+    if (n_cols < model->m.n_nodes())
+      return r.fail(B2B_ERR_SIZE, "x and u have %d columns (nodes) but the model has %d nodes",
+                    n_cols, model->m.n_nodes());
+    if (want_tangent != 0 && want_tangent != 1)
+      return r.fail(B2B_ERR_RANGE, "want_tangent is %d (0 or 1)", want_tangent);
+    const md::Problem pb = model->m.update(x, ldx, u, ldu, want_tangent == 1);
     if (pb.status) return report_model_problem(r, model, pb);
     return B2B_OK;
   });

@@ -6,40 +6,6 @@
 
 namespace b2b {
 namespace model {
-namespace {
-
-// The equation (0-based, or -1 if constrained) of each of the 24 dofs of a
-// contact, -1 also for slots without a node.
-// In 64 bits: v - base of any two ints fits (check_equations has made sure
-// that every unconstrained one is below n_eq, so the result fits an int).
-void dof_equations(const Contact& c, const EqMap& map, int e[24]) {
-  for (int s = 0; s < 8; ++s)
-    for (int i = 0; i < 3; ++i) {
-      const int node = c.nodes[s];
-      if (node < 0) {
-        e[3 * s + i] = -1;
-        continue;
-      }
-      const int64_t v = map.eq[static_cast<size_t>(map.ldeq) * node + i];
-      e[3 * s + i] = v < map.base ? -1 : static_cast<int>(v - map.base);
-    }
-}
-
-template <class Visit>
-void for_each_entry(const Model& m, const EqMap& map, Visit visit) {
-  int e[24];
-  for (const Contact& c : m.contacts()) {
-    dof_equations(c, map, e);
-    const double* K = m.tangent(c);
-    for (int col = 0; col < 24; ++col) {
-      if (e[col] < 0) continue;
-      for (int row = 0; row < 24; ++row)
-        if (e[row] >= 0) visit(e[row], e[col], K[row + 24 * col]);
-    }
-  }
-}
-
-}  // namespace
 
 Problem check_equations(const Model& m, const EqMap& map, int kl, int ku) {
   Problem pb;
@@ -73,23 +39,26 @@ Problem check_equations(const Model& m, const EqMap& map, int kl, int ku) {
   return pb;
 }
 
-void add_residual(const Model& m, const EqMap& map, double* f) {
+void add_residual(const Model& m, const EqMap& map, double scale, double* f) {
   int e[24];
   for (const Contact& c : m.contacts()) {
     dof_equations(c, map, e);
     for (int k = 0; k < 24; ++k)
-      if (e[k] >= 0) f[e[k]] += c.residual[k];
+      if (e[k] >= 0) f[e[k]] += scale * c.residual[k];
   }
 }
 
-void add_tangent_dense(const Model& m, const EqMap& map, double* K, int ldk) {
-  for_each_entry(m, map, [K, ldk](int r, int c, double v) { K[r + static_cast<size_t>(ldk) * c] += v; });
+void add_tangent_dense(const Model& m, const EqMap& map, double scale, double* K, int ldk) {
+  for_each_entry(m, map, [K, ldk, scale](int r, int c, double v) {
+    K[r + static_cast<size_t>(ldk) * c] += scale * v;
+  });
 }
 
-void add_tangent_banded(const Model& m, const EqMap& map, int kl, int ku, double* AB, int ldab) {
+void add_tangent_banded(const Model& m, const EqMap& map, int kl, int ku, double scale,
+                        double* AB, int ldab) {
   for_each_entry(m, map, [=](int r, int c, double v) {
     // within the band (checked): 0 <= kl + ku + r - c < ldab, in 64 bits
-    AB[static_cast<int64_t>(kl) + ku + r - c + static_cast<int64_t>(ldab) * c] += v;
+    AB[static_cast<int64_t>(kl) + ku + r - c + static_cast<int64_t>(ldab) * c] += scale * v;
   });
 }
 

@@ -6,17 +6,11 @@
 
 #include <cstdint>
 
+#include "contact_dofs.hpp"
 #include "model.hpp"
 
 namespace b2b {
 namespace model {
-
-// The host's numbering: eq[ldeq*node + i], numbered from base; below base:
-// constrained. n_eq equations.
-struct EqMap {
-  const int* eq;
-  int ldeq, base, n_eq;
-};
 
 // The first dof of a contact whose equation number is beyond n_eq
 // (B2B_ERR_RANGE: node, axis, value) or, with kl >= 0, whose coupling with
@@ -24,10 +18,15 @@ struct EqMap {
 // other_beam = column equations).
 Problem check_equations(const Model& m, const EqMap& map, int kl = -1, int ku = -1);
 
-void add_residual(const Model& m, const EqMap& map, double* f);
-void add_tangent_dense(const Model& m, const EqMap& map, double* K, int ldk);
+// Each adds scale * (the contacts' entry) into the host's array. scale 1 adds
+// the entries themselves (1 * v is v exactly), and scale -1 their negatives,
+// exactly -1 times what scale 1 adds (negation is exact and the order of the
+// sums is the same).
+void add_residual(const Model& m, const EqMap& map, double scale, double* f);
+void add_tangent_dense(const Model& m, const EqMap& map, double scale, double* K, int ldk);
 // LAPACK general band storage for dgbsv: (r, c) at AB[kl + ku + r - c + ldab*c].
-void add_tangent_banded(const Model& m, const EqMap& map, int kl, int ku, double* AB, int ldab);
+void add_tangent_banded(const Model& m, const EqMap& map, int kl, int ku, double scale,
+                        double* AB, int ldab);
 // Number of (row, col) entries: every pair of unconstrained dofs of each
 // contact, also where the value is 0 (the pattern does not change with values).
 int64_t coo_count(const Model& m, const EqMap& map);

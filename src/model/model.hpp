@@ -47,7 +47,12 @@ struct Problem {
   int status = 0;
   enum class What {
     None, NodeRange, SelfNoGroupPair, NoGroupPair, Coordinate, Segment,
-    Overflow, Buffer, Equation, Band, Candidates, Segments
+    Overflow, Buffer, Equation, Band, Candidates, Segments,
+    Displacement,      // node, axis, value: a non-finite displacement u
+    CurrentCoordinate, // node, axis, value: x + u beyond B2B_COORD_MAX
+    Profile,           // row, col: a tangent entry outside the host's profile
+    ProfilePointer,    // row (equation), value: an invalid jp entry
+    Increment          // node, axis, value: a non-finite prescribed increment
   } what = What::None;
   int beam = -1, segment = -1, node = -1, slot_a = -1, slot_b = -1, axis = -1;
   int other_beam = -1, other_segment = -1;
@@ -96,6 +101,10 @@ class Model {
   // --- per iteration ---
   // x: host coordinates (node k at x[ldx*k]), valid size (checked by the caller).
   Problem update(const double* x, int ldx, bool want_tangent);
+  // The same with the current coordinates x + u (node k's displacement at
+  // u[ldu*k]): the sum is formed per coordinate as it is read, so the result
+  // is update(x + u) bit for bit.
+  Problem update(const double* x, int ldx, const double* u, int ldu, bool want_tangent);
   const std::vector<Contact>& contacts() const { return contacts_; }
   const double* tangent(const Contact& c) const {
     return c.tangent < 0 ? nullptr : tangents_.data() + c.tangent;

@@ -57,8 +57,8 @@ int exit_direction(double t) {
 
 class Updater {
  public:
-  Updater(Model& m, const double* x, int ldx, bool want_tangent)
-      : m_(m), x_(x), ldx_(ldx), want_tangent_(want_tangent) {}
+  Updater(Model& m, const double* x, int ldx, const double* u, int ldu, bool want_tangent)
+      : m_(m), x_(x), u_(u), ldx_(ldx), ldu_(ldu), want_tangent_(want_tangent) {}
   Problem run();
 
  private:
@@ -75,7 +75,8 @@ class Updater {
   };
   Model& m_;
   const double* x_;
-  int ldx_;
+  const double* u_;  // displacements added to x_ (nullptr: x_ is current)
+  int ldx_, ldu_;
   bool want_tangent_;
   std::vector<double> cur_;
   std::vector<Box> boxes_;
@@ -130,8 +131,13 @@ class Updater {
 };
 
 Problem Model::update(const double* x, int ldx, bool want_tangent) {
-  Updater u(*this, x, ldx, want_tangent);
+  Updater u(*this, x, ldx, nullptr, 0, want_tangent);
   return u.run();
+}
+
+Problem Model::update(const double* x, int ldx, const double* u, int ldu, bool want_tangent) {
+  Updater up(*this, x, ldx, u, ldu, want_tangent);
+  return up.run();
 }
 
 Problem Updater::run() {
@@ -173,6 +179,7 @@ Problem Updater::gather() {
   cur_.resize(3 * used.size());
   for (size_t u = 0; u < used.size(); ++u) {
     const double* p = x_ + static_cast<size_t>(ldx_) * used[u];
+    const double* d = u_ ? u_ + static_cast<size_t>(ldu_) * used[u] : nullptr;
     for (int i = 0; i < 3; ++i) {
       if (!std::isfinite(p[i]) || std::fabs(p[i]) > B2B_COORD_MAX) {
         pb.status = std::isfinite(p[i]) ? B2B_ERR_RANGE : B2B_ERR_NONFINITE;
@@ -182,7 +189,28 @@ Problem Updater::gather() {
         pb.value = p[i];
         return pb;
       }
-      cur_[3 * u + i] = p[i];
+      double c = p[i];
+      if (d) {
+        // reference + displacement: the one rounding update(x + u) has too
+        if (!std::isfinite(d[i])) {
+          pb.status = B2B_ERR_NONFINITE;
+          pb.what = Problem::What::Displacement;
+          pb.node = used[u];
+          pb.axis = i;
+          pb.value = d[i];
+          return pb;
+        }
+        c = p[i] + d[i];
+        if (!(std::fabs(c) <= B2B_COORD_MAX)) {  // also an overflow to inf
+          pb.status = B2B_ERR_RANGE;
+          pb.what = Problem::What::CurrentCoordinate;
+          pb.node = used[u];
+          pb.axis = i;
+          pb.value = c;
+          return pb;
+        }
+      }
+      cur_[3 * u + i] = c;
     }
   }
   pb = m_.check_elements(cur_.data());  // O(n), before any search
