@@ -37,6 +37,7 @@ module demo_trade
   use demo_solver, only: solve_scene
   use demo_history, only: run_history
   use demo_contact_hook, only: contact_hook_finish
+  use demo_output, only: output_prepare_dir
   use demo_errors, only: fatal, str
   use demo_nml_scan, only: lower
   use b2b, only: b2b_version
@@ -73,6 +74,7 @@ contains
 
     if (mode /= 'short' .and. mode /= 'full') call fatal('--trade-table: mode ''' // mode // ''' is not short or full')
     passed = .true.
+    call output_prepare_dir(out_dir, 'trade_table_' // mode, 'the output directory of --trade-table')
     call system_clock(c0, rate)
     md = trim(out_dir) // '/trade_table_' // mode // '.md'
     open (newunit=u, file=trim(md), status='replace', action='write', iostat=ios)
