@@ -30,7 +30,7 @@ module demo_solver
   use demo_contact_hook, only: contact_hook_init, contact_hook_commit, contact_hook_revert, contact_hook_failed, &
                                contact_hook_signature, contact_hook_snapshot, contact_snapshot, contact_hook_audit, &
                                contact_hook_crossed
-  use demo_history, only: run_history, step_row, iter_row
+  use demo_history, only: run_history, step_row, iter_row, rate_unmeasured
   use demo_output, only: output_begin, output_step, output_finish, output_contacts
   use demo_checks, only: check_step
   use, intrinsic :: iso_fortran_env, only: int64
@@ -38,7 +38,7 @@ module demo_solver
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
-  public :: solve_scene, step_callback, newton_state, perturb_dof
+  public :: solve_scene, step_callback, newton_state, perturb_dof, convergence_rate
 
   abstract interface
     !> Called after each planned step has converged (tests check the state).
@@ -319,10 +319,13 @@ contains
   !> p = log(r_k / r_(k-1)) / log(r_(k-1) / r_(k-2)) on the last three norms
   !> after the first (r_0, the residual of the load or motion increment
   !> before any correction, is the size of the step, not a Newton iterate)
-  !> and above the round-off floor (the final norm is dropped when it lies
-  !> within 3 times the floor of rounding_floor, where it measures the
-  !> rounding, not the iteration). rate < 0: fewer than three usable norms. stable: the active
-  !> contacts (their pairs) were the same in those iterations.
+  !> and above the round-off floor (the final norms are dropped while they
+  !> lie within 3 times the floor of rounding_floor, where they measure the
+  !> rounding, not the iteration; a zero norm is always dropped).
+  !> rate < 0 (printed "rate —"): not measurable, fewer than three usable
+  !> norms after r_0. rate = 0: measured, but the three norms did not
+  !> decrease (no convergence order). stable: the active contacts (their
+  !> pairs) were the same in those iterations.
   subroutine convergence_rate(norms, sigs, floor, rate, stable)
     real(dp), intent(in) :: norms(:), floor
     integer(int64), intent(in) :: sigs(:)
@@ -332,11 +335,12 @@ contains
     n = size(norms)
     rate = -1.0_dp
     stable = .false.
-    if (n >= 1) then
-      if (norms(n) <= 3.0_dp * floor) n = n - 1
-    end if
+    do while (n >= 1)
+      if (norms(n) > 3.0_dp * floor .and. norms(n) > 0.0_dp) exit
+      n = n - 1
+    end do
     if (n < 4) return
-    if (.not. (norms(n) > 0.0_dp .and. norms(n - 1) < norms(n - 2) .and. norms(n) < norms(n - 1))) then
+    if (.not. (norms(n - 1) < norms(n - 2) .and. norms(n) < norms(n - 1))) then
       rate = 0.0_dp
     else
       rate = log(norms(n) / norms(n - 1)) / log(norms(n - 1) / norms(n - 2))
@@ -369,8 +373,11 @@ contains
     cbuf = ''
     if (contact) then
       write (cbuf, '(a,i3,a,es10.3,a,es10.3)') '  contacts', row%n_active, '  f_N', row%fn, '  f_T', row%ft
-      if (row%rate >= 0.0_dp) write (cbuf(len_trim(cbuf) + 1:), '(a,f5.2,a)') '  rate', row%rate, &
-        trim(merge('  ', ' *', row%stable))
+      if (row%rate >= 0.0_dp) then
+        write (cbuf(len_trim(cbuf) + 1:), '(a,f5.2,a)') '  rate', row%rate, trim(merge('  ', ' *', row%stable))
+      else
+        cbuf = trim(cbuf) // '  rate ' // rate_unmeasured   ! fewer than three usable norms
+      end if
     end if
     write (*, '(2x,a,4es10.2)', advance='no') trim(buf), last
     write (*, '(a)') trim(cbuf)
