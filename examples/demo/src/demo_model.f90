@@ -56,7 +56,7 @@ module demo_model
     ! beams (chains of consecutive nodes; a ring's last element closes it)
     integer, allocatable :: beam_first_node(:), beam_n_nodes(:), beam_first_el(:), beam_n_el(:)
     logical, allocatable :: beam_closed(:)
-    real(dp), allocatable :: beam_radius(:) !< contact and plotting radius
+    real(dp), allocatable :: beam_radius(:) !< contact and plotting radius (&material contact_radius)
     integer, allocatable :: beam_group(:)   !< contact group
 
     ! boundary conditions and loads, per unit load factor

@@ -19,7 +19,7 @@ module demo_scene_reader
 
   character(len=*), parameter :: groups_valid = 'scene material beam support load motion output contact check'
   character(len=*), parameter :: keys_scene = 'title n_steps max_iter max_cutbacks tol solver'
-  character(len=*), parameter :: keys_material = 'id E nu radius A Iy Iz J'
+  character(len=*), parameter :: keys_material = 'id E nu radius A Iy Iz J contact_radius'
   character(len=*), parameter :: keys_beam = 'shape p1 p2 centre start axis angle points n_el material group up'
   character(len=*), parameter :: keys_support = 'beam node all group dofs'
   character(len=*), parameter :: keys_load = 'beam node all group force moment ramp'
@@ -174,8 +174,8 @@ contains
     integer, allocatable, intent(out) :: mat_id(:)
     real(dp), allocatable, intent(out) :: mat_stiff(:, :), mat_radius(:)
     integer :: id
-    real(dp) :: e, nu, radius, a, iy, iz, j
-    namelist /material/ id, e, nu, radius, a, iy, iz, j
+    real(dp) :: e, nu, radius, a, iy, iz, j, contact_radius
+    namelist /material/ id, e, nu, radius, a, iy, iz, j, contact_radius
     integer :: n_mat, k, ios
     character(len=256) :: iomsg
     ! materials
@@ -184,6 +184,7 @@ contains
     rewind (u)
     do k = 1, n_mat
       id = k; e = unset; nu = unset; radius = unset; a = unset; iy = unset; iz = unset; j = unset
+      contact_radius = unset
       read (u, nml=material, iostat=ios, iomsg=iomsg)
       if (ios /= 0) call read_failed('material', k, ios, iomsg)
       call need_real('material', k, 'E', [e])
@@ -211,7 +212,14 @@ contains
         call positive('material', k, 'Iy', iy)
         call positive('material', k, 'Iz', iz)
         call positive('material', k, 'J', j)
-        radius = sqrt(a / pi)   ! for plotting: the circle of the same area
+        radius = sqrt(a / pi)   ! the circle of the same area
+      end if
+      ! the contact (and plotting) radius: by default the section's radius,
+      ! or that of the circle of area A; contact_radius sets it apart from
+      ! the stiffness (A, I, J stay as given or as radius made them)
+      if (idx%has_key('material', k, 'contact_radius')) then
+        call positive('material', k, 'contact_radius', contact_radius)
+        radius = contact_radius
       end if
       if (any(mat_id(1:k - 1) == id)) call bad('material', k, 'id', 'id ' // str(id) // ' is used twice')
       mat_id(k) = id
