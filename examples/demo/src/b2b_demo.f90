@@ -12,7 +12,6 @@ program b2b_demo
   use demo_errors, only: fatal
   use demo_output, only: output_remove_stale, output_prepare_dir
   use demo_checks, only: check_finish
-  use demo_contact_hook, only: contact_hook_finish
   use demo_trade, only: trade_table
   use b2b, only: b2b_version
   implicit none
@@ -59,7 +58,6 @@ program b2b_demo
     call output_prepare_dir(trim(m%out_dir), trim(m%name), '&output dir of ' // trim(file))
   end if
   call solve_scene(m)
-  call contact_hook_finish()
   write (*, '(a)') trim(m%name) // ': complete, results in ' // trim(m%out_dir)
   ! the scene's own check (&check): exit code 1 if it fails
   if (.not. check_finish(m)) error stop 1

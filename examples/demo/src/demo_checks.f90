@@ -48,13 +48,13 @@
 !>                       supports (its pulled node), T_in = |load on beam_a|.
 !>                       At least two such steps (a plateau) are required.
 !> And for every scene with contact, whatever its &check (or none): the
-!> interpenetration audit (demo_contact_hook, after every converged step)
+!> interpenetration audit (demo_contact_report, after every converged step)
 !> found no pair that overlaps with no force (issue 16).
 module demo_checks
   use demo_kinds, only: dp, pi
   use demo_model, only: scene_model, external_force
   use demo_history, only: step_row, rate_unmeasured
-  use demo_contact_hook, only: contact_snapshot
+  use demo_contact_report, only: contact_snapshot
   use demo_errors, only: str
   implicit none
   private

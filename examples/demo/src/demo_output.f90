@@ -25,7 +25,7 @@ module demo_output
   use demo_history, only: run_history
   use demo_rotation, only: quat_to_rotvec
   use demo_errors, only: fatal
-  use demo_contact_hook, only: contact_snapshot, contact_hook_snapshot, contact_point
+  use demo_contact_report, only: contact_snapshot, contact_report_snapshot, contact_point
   implicit none
   private
   public :: output_begin, output_step, output_finish, output_path, output_remove_stale, output_contacts
@@ -146,7 +146,7 @@ contains
     type(contact_snapshot) :: snap
 
     if (.not. m%vtk) return
-    call contact_hook_snapshot(snap)
+    call contact_report_snapshot(snap)
     if (step == 0) snap%n = 0
     write (tag, '(a,i4.4,a)') '_', step, '.vtp'
     path = output_path(m, trim(tag))
