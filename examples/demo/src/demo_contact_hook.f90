@@ -11,9 +11,12 @@
 !>    b2b_model_create; b2b_model_add_beam for every beam (its global node
 !>    numbers, closed or not, contact radius, the curve kind of &contact,
 !>    its group); one b2b_params (penalty, law, regularization_gap,
-!>    friction, tangential_penalty, tangent) given to
-!>    b2b_model_set_group_pair for every pair of groups (and each group with
-!>    itself, plus b2b_model_set_self_contact per beam, with self_contact);
+!>    friction, tangential_penalty, tangent, and the scene's parallel_angle,
+!>    warm_start, max_iterations) given to b2b_model_set_group_pair for
+!>    every pair of groups (and each group with itself, plus
+!>    b2b_model_set_self_contact per beam, with self_contact); the scene's
+!>    model options (search_margin, threads, max_handover_hops,
+!>    max_candidates: b2b_model_set_real/_int, contact_hook_options);
 !>    b2b_model_finalize(model, n_nodes); an update of the initial
 !>    configuration, committed where it carries no contact force.
 !>  * contact_hook_forces(model, m, eq, want_tangent, sys, r, fint, ok, why),
@@ -36,10 +39,11 @@
 !>  * at the end: b2b_model_destroy(model).
 module demo_contact_hook
   use demo_kinds, only: dp, ndf
-  use demo_model, only: scene_model
+  use demo_model, only: scene_model, option_model_real, option_model_int, option_params_real, option_params_int
   use demo_linear_system, only: linear_system
   use demo_errors, only: fatal, str
   use b2b, only: b2b_model, b2b_params, b2b_params_create, b2b_params_set_real, b2b_params_set_int, &
+                 b2b_model_set_real, b2b_model_set_int, &
                  b2b_params_finalize, b2b_params_destroy, b2b_model_create, b2b_model_add_beam, &
                  b2b_model_set_group_pair, b2b_model_set_self_contact, b2b_model_finalize, &
                  b2b_model_update, b2b_model_contact_count, b2b_model_get_contact, b2b_model_add_residual, &
@@ -52,7 +56,7 @@ module demo_contact_hook
   implicit none
   private
   public :: contact_hook_build, contact_hook_forces, contact_hook_commit, contact_hook_revert
-  public :: contact_hook_crossed
+  public :: contact_hook_crossed, contact_hook_options
 
 contains
 
@@ -92,6 +96,7 @@ contains
     integer :: b, k, g, beam, ierr, i
     integer, allocatable :: nodes(:)
     character(len=512) :: msg
+    character(len=:), allocatable :: key
     logical :: have_self_pair
     integer :: counts(B2B_MODEL_COUNTS_LEN)
 
@@ -125,6 +130,8 @@ contains
     end if
     call b2b_params_set_int(params, 'tangent', tangent_option(m%contact%tangent), ierr, msg)
     call check(ierr, msg, 'tangent')
+    call contact_hook_options(m, model, params, ierr, msg, key)
+    call check(ierr, msg, key)
     call b2b_params_finalize(params, ierr, msg)
     call check(ierr, msg, 'parameters')
     do k = 1, m%contact%n_pairs
@@ -168,6 +175,36 @@ contains
       call check(ierr, msg, 'revert (initial configuration)')
     end if
   end subroutine contact_hook_build
+
+  !> The library options the scene sets (&contact search_margin, threads,
+  !> max_handover_hops, max_candidates: b2b_model_set_real/_int on model;
+  !> parallel_angle, warm_start, max_iterations: b2b_params_set_real/_int
+  !> on params, before it is finalized), passed as they are. The first the
+  !> library refuses ends it: ierr, the library's message and its key.
+  subroutine contact_hook_options(m, model, params, ierr, errmsg, key)
+    type(scene_model), intent(in) :: m
+    type(b2b_model), intent(inout) :: model
+    type(b2b_params), intent(inout) :: params
+    integer, intent(out) :: ierr
+    character(len=*), intent(out) :: errmsg
+    character(len=:), allocatable, intent(out) :: key
+    integer :: k
+    ierr = 0
+    errmsg = ''
+    key = ''
+    do k = 1, m%contact%n_options
+      key = trim(m%contact%option_key(k))
+      associate (v => m%contact%option_value(k))
+        select case (m%contact%option_kind(k))
+        case (option_model_real); call b2b_model_set_real(model, key, v, ierr, errmsg)
+        case (option_model_int); call b2b_model_set_int(model, key, nint(v), ierr, errmsg)
+        case (option_params_real); call b2b_params_set_real(params, key, v, ierr, errmsg)
+        case (option_params_int); call b2b_params_set_int(params, key, nint(v), ierr, errmsg)
+        end select
+      end associate
+      if (ierr /= 0) return
+    end do
+  end subroutine contact_hook_options
 
   !> Updates the model at the positions m%x and adds the contact part of the
   !> internal force to r (free dofs, numbered by eq) and to fint (all dofs),

@@ -5,7 +5,10 @@
 module demo_scene_reader
   use demo_kinds, only: dp, pi, ndf
   use demo_errors, only: fatal, str
-  use demo_model, only: scene_model, name_len, max_ramp_points
+  use demo_model, only: scene_model, name_len, max_ramp_points, option_model_real, option_model_int, &
+                        option_params_real, option_params_int
+  use demo_contact_hook, only: contact_hook_options
+  use b2b, only: b2b_model, b2b_params, b2b_model_create, b2b_model_destroy, b2b_params_create, b2b_params_destroy
   use demo_nml_scan, only: nml_index, nml_scan, lower
   use demo_geometry, only: line_points, arc_points, element_frame
   use demo_rotation, only: quat_identity
@@ -26,7 +29,9 @@ module demo_scene_reader
   character(len=*), parameter :: keys_motion = 'beam node all group dof value ramp'
   character(len=*), parameter :: keys_output = 'vtk csv vtk_every dir monitor_beam monitor_node'
   character(len=*), parameter :: keys_contact = 'curve law penalty regularization_gap friction ' &
-                                                // 'tangential_penalty self_contact pairs tangent'
+                                                // 'tangential_penalty self_contact pairs tangent ' &
+                                                // 'search_margin threads max_handover_hops max_candidates ' &
+                                                // 'parallel_angle warm_start max_iterations'
   character(len=*), parameter :: keys_check = 'kind beam_a beam_b tolerance min_rate min_contacts ' &
                                               // 'min_nodes_crossed reference'
 
@@ -649,11 +654,17 @@ contains
     logical :: self_contact
     integer :: pairs(2, max_pairs), ios, n, i
     character(len=256) :: iomsg
+    ! the library's options, passed as they are (demo_contact_hook)
+    real(dp) :: search_margin, parallel_angle
+    integer :: threads, max_handover_hops, max_candidates, warm_start, max_iterations
     namelist /contact/ curve, law, penalty, regularization_gap, friction, tangential_penalty, self_contact, pairs, &
-                       tangent
+                       tangent, search_margin, threads, max_handover_hops, max_candidates, parallel_angle, &
+                       warm_start, max_iterations
     if (idx%count('contact') == 0) return
     curve = ''; law = 'linear'; penalty = unset; regularization_gap = 0.0_dp; friction = 0.0_dp
     tangential_penalty = 0.0_dp; self_contact = .false.; pairs = 0; tangent = 'exact'
+    search_margin = 0.0_dp; parallel_angle = 0.0_dp; threads = 0; max_handover_hops = 0; max_candidates = 0
+    warm_start = 0; max_iterations = 0
     rewind (u)
     read (u, nml=contact, iostat=ios, iomsg=iomsg)
     if (ios /= 0) call read_failed('contact', 1, ios, iomsg)
@@ -697,7 +708,49 @@ contains
     m%contact%tangential_penalty = tangential_penalty; m%contact%self_contact = self_contact
     m%contact%n_pairs = n
     m%contact%pairs = pairs(:, 1:n)
+    call option('search_margin', option_model_real, search_margin)
+    call option('threads', option_model_int, real(threads, dp))
+    call option('max_handover_hops', option_model_int, real(max_handover_hops, dp))
+    call option('max_candidates', option_model_int, real(max_candidates, dp))
+    call option('parallel_angle', option_params_real, parallel_angle)
+    call option('warm_start', option_params_int, real(warm_start, dp))
+    call option('max_iterations', option_params_int, real(max_iterations, dp))
+    call check_options(m)
+  contains
+    !> Records a library option the scene gives (and only then).
+    subroutine option(key, kind, value)
+      character(len=*), intent(in) :: key
+      integer, intent(in) :: kind
+      real(dp), intent(in) :: value
+      if (.not. idx%has_key('contact', 1, key)) return
+      m%contact%n_options = m%contact%n_options + 1
+      m%contact%option_key(m%contact%n_options) = key
+      m%contact%option_kind(m%contact%n_options) = kind
+      m%contact%option_value(m%contact%n_options) = value
+    end subroutine option
   end subroutine read_contact
+
+  !> The library's own check of the options of &contact, now, with the line:
+  !> they are set on a model and a parameter set made for it, exactly as the
+  !> contact hook sets them later, and the first refused stops the program
+  !> with the library's message.
+  subroutine check_options(m)
+    type(scene_model), intent(in) :: m
+    type(b2b_model) :: model
+    type(b2b_params) :: params
+    integer :: ierr
+    character(len=512) :: msg
+    character(len=:), allocatable :: key
+    if (m%contact%n_options == 0) return
+    call b2b_model_create(model, ierr, msg)
+    if (ierr /= 0) call fatal('contact model: create: ' // trim(msg))
+    call b2b_params_create(params, ierr, msg)
+    if (ierr /= 0) call fatal('contact model: parameters: ' // trim(msg))
+    call contact_hook_options(m, model, params, ierr, msg, key)
+    call b2b_params_destroy(params)
+    call b2b_model_destroy(model)
+    if (ierr /= 0) call bad('contact', 1, key, trim(msg))
+  end subroutine check_options
 
   subroutine read_check(u, m)
     integer, intent(in) :: u
