@@ -10,9 +10,8 @@ program b2b_demo
   use demo_scene_reader, only: read_scene
   use demo_solver, only: solve_scene
   use demo_errors, only: fatal
-  use demo_output, only: output_remove_stale
+  use demo_output, only: output_remove_stale, output_prepare_dir
   use demo_checks, only: check_finish
-  use demo_contact_hook, only: contact_hook_finish
   use demo_trade, only: trade_table
   use b2b, only: b2b_version
   implicit none
@@ -42,18 +41,23 @@ program b2b_demo
   write (*, '(a,i0,a,i0,a,i0,a)') 'b2b_demo (b2b ', major, '.', minor, '.', patch, '): ' // trim(file)
   dir = ''
   if (command_argument_count() == 2) then
-    ! results of an earlier run go before anything can fail, so that a
-    ! failed run never leaves a complete-looking result behind
+    ! the output directory is made (or found writable) first, and results
+    ! of an earlier run go before anything can fail, so that a failed run
+    ! never leaves a complete-looking result behind
     call get_command_argument(2, dir)
     i = index(file, '/', back=.true.)
     j = index(file, '.', back=.true.)
     if (j <= i) j = len_trim(file) + 1
+    call output_prepare_dir(trim(dir), file(i + 1:j - 1), 'the second argument')
     call output_remove_stale(trim(dir), file(i + 1:j - 1))
   end if
   call read_scene(trim(file), m)
-  if (len_trim(dir) > 0) m%out_dir = dir
+  if (len_trim(dir) > 0) then
+    m%out_dir = dir
+  else
+    call output_prepare_dir(trim(m%out_dir), trim(m%name), '&output dir of ' // trim(file))
+  end if
   call solve_scene(m)
-  call contact_hook_finish()
   write (*, '(a)') trim(m%name) // ': complete, results in ' // trim(m%out_dir)
   ! the scene's own check (&check): exit code 1 if it fails
   if (.not. check_finish(m)) error stop 1

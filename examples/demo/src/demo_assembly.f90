@@ -2,6 +2,8 @@
 !>   r = f_int(x, R) + f_contact(x) - lambda f_ext   on the free dofs,
 !>   K = d r / d(u, spin)                            (assembled into sys),
 !> and f_int on every dof (fint, whose constrained entries are the reactions).
+!> The contact part comes from the contact model, when one is given (the
+!> caller's, built by demo_contact_hook) and the scene has contact.
 module demo_assembly
   use demo_kinds, only: dp, ndf
   use demo_model, only: scene_model, external_force
@@ -9,19 +11,26 @@ module demo_assembly
   use demo_beam_element, only: beam_element
   use demo_linear_system, only: linear_system, sys_zero, sys_add
   use demo_contact_hook, only: contact_hook_forces
+  use b2b, only: b2b_model
   implicit none
   private
   public :: assemble
 
 contains
 
-  subroutine assemble(m, eq, lam, want_tangent, sys, r, fint)
+  !> ok = .false. (why: the model's message) if the contact update failed.
+  subroutine assemble(m, eq, lam, want_tangent, sys, r, fint, model, ok, why)
     type(scene_model), intent(in) :: m
     integer, intent(in) :: eq(:, :)
     real(dp), intent(in) :: lam
     logical, intent(in) :: want_tangent
     type(linear_system), intent(inout) :: sys
     real(dp), intent(out) :: r(:), fint(:, :)
+    type(b2b_model), intent(inout), optional :: model
+    logical, intent(out), optional :: ok
+    character(len=:), allocatable, intent(out), optional :: why
+    logical :: c_ok
+    character(len=:), allocatable :: c_why
     real(dp) :: fe(12), ke(12, 12), ta(3, 3), tb(3, 3)
     integer :: el, a, b, i, j, ei, ej, node, d
     integer :: dof_node(12), dof_d(12)
@@ -66,7 +75,12 @@ contains
 
     ! ---- contact hook: contact part of the internal force and its tangent,
     !      at the current positions m%x (see demo_contact_hook)
-    call contact_hook_forces(m, eq, want_tangent, sys, r, fint)
+    c_ok = .true.
+    c_why = ''
+    if (present(model) .and. m%contact%enabled) call contact_hook_forces(model, m, eq, want_tangent, sys, r, fint, &
+                                                                          c_ok, c_why)
+    if (present(ok)) ok = c_ok
+    if (present(why)) why = c_why
   end subroutine assemble
 
 end module demo_assembly

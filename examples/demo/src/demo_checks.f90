@@ -48,13 +48,13 @@
 !>                       supports (its pulled node), T_in = |load on beam_a|.
 !>                       At least two such steps (a plateau) are required.
 !> And for every scene with contact, whatever its &check (or none): the
-!> interpenetration audit (demo_contact_hook, after every converged step)
+!> interpenetration audit (demo_contact_report, after every converged step)
 !> found no pair that overlaps with no force (issue 16).
 module demo_checks
   use demo_kinds, only: dp, pi
   use demo_model, only: scene_model, external_force
-  use demo_history, only: step_row
-  use demo_contact_hook, only: contact_snapshot
+  use demo_history, only: step_row, rate_unmeasured
+  use demo_contact_report, only: contact_snapshot
   use demo_errors, only: str
   implicit none
   private
@@ -351,6 +351,7 @@ contains
   logical function check_finish(m) result(passed)
     type(scene_model), intent(in) :: m
     character(len=*), parameter :: fmt_err = '(a,es13.6,a,es13.6,a,es9.2)'
+    character(len=16) :: worst_text
     call audit_verdict(m)
     if (len_trim(m%check%kind) == 0) then
       passed = ok
@@ -364,9 +365,11 @@ contains
       write (*, '(a,i0,a,es9.2,a,es9.2)') '  steps checked ', n_checked, ', worst rel. error (f_N and reaction) ', &
         worst, ', tolerance ', m%check%tolerance
     case ('sliding')
-      write (*, '(a,i0,a,i0,a,f6.3,a,i0,a,i0,a)') trim(m%name) // ': check sliding: cut-backs ', total_cut, &
+      worst_text = adjustl(rate_unmeasured)
+      if (n_rate > 0) write (worst_text, '(f6.3)') worst_rate
+      write (*, '(a,i0,a,i0,a,a,a,i0,a,i0,a)') trim(m%name) // ': check sliding: cut-backs ', total_cut, &
         ', steps with a fixed active set and a measurable rate ', n_rate, ' (worst rate ', &
-        merge(worst_rate, -1.0_dp, n_rate > 0), '), contact crossed segments ', seg_min, '..', seg_max, ' of beam_b'
+        trim(worst_text), '), contact crossed segments ', seg_min, '..', seg_max, ' of beam_b'
       if (trim(m%contact%curve) /= 'linear' .and. total_cut > 0) call fail('cut-backs with a smoothed curve kind')
       if (trim(m%contact%curve) == 'linear') write (*, '(a,i0,a,i0,a)') '  straight segments (reported, not ' &
         // 'failures): ', total_cut, ' cut-backs, ', n_slow, ' steps with a rate below min_rate'

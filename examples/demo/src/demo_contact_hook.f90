@@ -1,83 +1,62 @@
-!> THE CONTACT HOOK: the one place where the contact model of b2b is coupled
-!> to this host, through the Fortran module b2b exactly as a user's code
-!> would call it. The host never evaluates a pair itself.
+!> THE CONTACT HOOK: all a host needs to couple the contact model of b2b,
+!> through the Fortran module b2b, and nothing else: the file a host author
+!> copies (replacing scene_model by the host's mesh and state, linear_system
+!> by its Newton matrix, fatal by its error handling). The model is the
+!> caller's, a type(b2b_model) passed to every routine; this module keeps no
+!> state. The demo's extras (contacts for the output, the audit, the
+!> per-iteration signature of the active set, debug printing) are in
+!> demo_contact_report and only read the model.
 !>
-!>  * contact_hook_init: b2b_model_create; b2b_model_add_beam for every beam
-!>    (its global node numbers, closed or not, radius, the curve kind of
-!>    &contact, its group); one b2b_params (penalty, law, regularization_gap,
-!>    friction, tangential_penalty, tangent) given to b2b_model_set_group_pair for
+!>  * contact_hook_build(model, m), once before the first step:
+!>    b2b_model_create; b2b_model_add_beam for every beam (its global node
+!>    numbers, closed or not, contact radius, the curve kind of &contact,
+!>    its group); one b2b_params (penalty, law, regularization_gap,
+!>    friction, tangential_penalty, tangent, and the scene's parallel_angle,
+!>    warm_start, max_iterations) given to b2b_model_set_group_pair for
 !>    every pair of groups (and each group with itself, plus
-!>    b2b_model_set_self_contact per beam, with self_contact);
-!>    b2b_model_finalize(model, n_nodes).
-!>  * contact_hook_forces, every assembly, with the current positions m%x:
-!>    b2b_model_update; b2b_model_add_residual into r (the contact part of
-!>    the INTERNAL force: r = f_int + f_contact - lambda f_ext, so it is
-!>    added) and into f_int on every dof (the reactions include the contact);
-!>    the tangent with b2b_model_add_tangent_banded (or _dense). When the band
-!>    is too narrow for a contact (B2B_ERR_RANGE, nothing added), the width
-!>    the contacts need is computed from their nodes (b2b_model_get_contact)
-!>    and reported as an overflow of the linear system: the Newton loop
-!>    widens the band (or goes dense) and assembles again.
-!>  * contact_hook_audit after a converged (sub)step, before its commit:
-!>    b2b_model_audit (tolerance audit_tolerance of the smaller radius) lists
-!>    the pairs that overlap with no force; each is printed, and the count
-!>    goes into the snapshot, which the scene check fails on (demo_checks).
-!>  * contact_hook_commit after a converged (sub)step: b2b_model_commit.
-!>  * contact_hook_revert on a cut-back: b2b_model_revert.
-!> A failed update (e.g. a segment folded by a wild Newton iterate) is not
-!> fatal: contact_hook_failed reports it and the step is cut back.
+!>    b2b_model_set_self_contact per beam, with self_contact); the scene's
+!>    model options (search_margin, threads, max_handover_hops,
+!>    max_candidates: b2b_model_set_real/_int, contact_hook_options);
+!>    b2b_model_finalize(model, n_nodes); an update of the initial
+!>    configuration, committed where it carries no contact force.
+!>  * contact_hook_forces(model, m, eq, want_tangent, sys, r, fint, ok, why),
+!>    every assembly, with the current positions m%x: b2b_model_update;
+!>    b2b_model_add_residual into r (the contact part of the INTERNAL force:
+!>    r = f_int + f_contact - lambda f_ext, so it is added) and into f_int on
+!>    every dof (the reactions include the contact); the tangent with
+!>    b2b_model_add_tangent_banded (or _dense). When the band is too narrow
+!>    for a contact (B2B_ERR_RANGE, nothing added), the width the contacts
+!>    need is computed from their nodes (b2b_model_get_contact) and reported
+!>    as an overflow of the linear system: the Newton loop widens the band
+!>    (or goes dense) and assembles again. A failed update (e.g. a segment
+!>    folded by a wild Newton iterate) is not fatal: ok = .false. with the
+!>    model's message, and the caller cuts the step back.
+!>  * contact_hook_commit(model) after a converged (sub)step: b2b_model_commit.
+!>  * contact_hook_revert(model) on a cut-back: b2b_model_revert.
+!>  * contact_hook_crossed(model): pairs of beams whose axes passed through
+!>    each other in the last update (B2B_COUNT_CROSSED); a converged state
+!>    with one is cut back.
+!>  * at the end: b2b_model_destroy(model).
 module demo_contact_hook
   use demo_kinds, only: dp, ndf
-  use demo_model, only: scene_model
+  use demo_model, only: scene_model, option_model_real, option_model_int, option_params_real, option_params_int
   use demo_linear_system, only: linear_system
   use demo_errors, only: fatal, str
   use b2b, only: b2b_model, b2b_params, b2b_params_create, b2b_params_set_real, b2b_params_set_int, &
+                 b2b_model_set_real, b2b_model_set_int, &
                  b2b_params_finalize, b2b_params_destroy, b2b_model_create, b2b_model_add_beam, &
                  b2b_model_set_group_pair, b2b_model_set_self_contact, b2b_model_finalize, &
                  b2b_model_update, b2b_model_contact_count, b2b_model_get_contact, b2b_model_add_residual, &
                  b2b_model_add_tangent_banded, b2b_model_add_tangent_dense, b2b_model_commit, &
-                 b2b_model_revert, b2b_model_stats, b2b_model_destroy, b2b_model_audit, &
-                 B2B_AUDIT_OTHER, B2B_AUDIT_PARALLEL, B2B_AUDIT_OUTSIDE_BOTH, B2B_AUDIT_NEVER_EVALUATED, &
-                 B2B_AUDIT_EXCLUDED_SELF, B2B_AUDIT_CROSSED, B2B_IX_COUNT_CROSSED, B2B_IX_COUNT_ACTIVE, &
-                 B2B_MODEL_COUNTS_LEN, &
+                 b2b_model_revert, b2b_model_stats, b2b_model_destroy, &
+                 B2B_IX_COUNT_CROSSED, B2B_IX_COUNT_ACTIVE, B2B_MODEL_COUNTS_LEN, &
                  B2B_CURVE_LINEAR, B2B_CURVE_HERMITE_MIDPOINT, B2B_CURVE_HERMITE_NODAL, &
                  B2B_CURVE_HERMITE_NODAL_WEIGHTED, B2B_LAW_LINEAR, B2B_LAW_QUADRATIC, B2B_ERR_RANGE, &
                  B2B_TANGENT_EXACT, B2B_TANGENT_SYMMETRIC, B2B_TANGENT_MAIN, B2B_TANGENT_FD
-  use, intrinsic :: iso_fortran_env, only: int64
   implicit none
   private
-  public :: contact_hook_init, contact_hook_forces, contact_hook_commit, contact_hook_revert
-  public :: contact_hook_failed, contact_hook_signature, contact_hook_snapshot, contact_hook_finish
-  public :: contact_hook_audit, contact_hook_crossed
-
-  !> Overlaps below this fraction of the smaller radius are not reported by the audit.
-  real(dp), parameter, public :: audit_tolerance = 0.01_dp
-
-  !> One active contact of the last update, as b2b_model_get_contact gives it.
-  type, public :: contact_point
-    integer :: pair(4) = 0        !< beam A, segment A, beam B, segment B (1-based)
-    integer :: nodes(8) = 0       !< host nodes of A's patch slots, then B's (0: none)
-    real(dp) :: info(32) = 0.0_dp !< B2B_INFO_*: the C entry info[k] is info(k + 1)
-  end type contact_point
-
-  !> The contacts of the last update and the model's statistics.
-  type, public :: contact_snapshot
-    integer :: n = 0
-    type(contact_point), allocatable :: c(:)
-    integer :: counts(16) = 0
-    real(dp) :: totals(8) = 0.0_dp
-    integer :: audit_found = 0    !< findings of the run's audits so far (b2b_model_audit)
-  end type contact_snapshot
-
-  type(b2b_model), save :: model
-  logical, save :: debug = .false.
-  logical, save :: on = .false.        !< a model exists (contact_hook_init ran with &contact)
-  logical, save :: updated = .false.   !< an update since the last commit or revert
-  logical, save :: failed = .false.
-  character(len=512), save :: fail_msg = ''
-  type(contact_snapshot), save :: last
-  integer, save :: audit_total = 0     !< findings of every audit since contact_hook_init
-  integer, allocatable, save :: eq_all(:, :)   !< every dof numbered, for the contact part of f_int
+  public :: contact_hook_build, contact_hook_forces, contact_hook_commit, contact_hook_revert
+  public :: contact_hook_crossed, contact_hook_options
 
 contains
 
@@ -108,25 +87,20 @@ contains
     if (ierr /= 0) call fatal('contact model: ' // what // ': ' // trim(errmsg))
   end subroutine check
 
-  subroutine contact_hook_init(m, quiet)
+  !> Builds the contact model of scene m (which has &contact) into model; a
+  !> model left from an earlier run is freed first.
+  subroutine contact_hook_build(model, m)
+    type(b2b_model), intent(inout) :: model
     type(scene_model), intent(in) :: m
-    logical, intent(in), optional :: quiet
     type(b2b_params) :: params
-    integer :: b, k, g, beam, ierr, i, node
+    integer :: b, k, g, beam, ierr, i
     integer, allocatable :: nodes(:)
     character(len=512) :: msg
+    character(len=:), allocatable :: key
     logical :: have_self_pair
     integer :: counts(B2B_MODEL_COUNTS_LEN)
 
-    if (on) call b2b_model_destroy(model)
-    on = .false.
-    updated = .false.
-    failed = .false.
-    last%n = 0
-    audit_total = 0
-    if (.not. m%contact%enabled) return
-    call get_environment_variable('B2B_DEMO_DEBUG', length=i)
-    debug = i > 0
+    call b2b_model_destroy(model)
     call b2b_model_create(model, ierr, msg)
     call check(ierr, msg, 'create')
     do b = 1, m%n_beams
@@ -156,6 +130,8 @@ contains
     end if
     call b2b_params_set_int(params, 'tangent', tangent_option(m%contact%tangent), ierr, msg)
     call check(ierr, msg, 'tangent')
+    call contact_hook_options(m, model, params, ierr, msg, key)
+    call check(ierr, msg, key)
     call b2b_params_finalize(params, ierr, msg)
     call check(ierr, msg, 'parameters')
     do k = 1, m%contact%n_pairs
@@ -198,44 +174,68 @@ contains
       call b2b_model_revert(model, ierr, msg)
       call check(ierr, msg, 'revert (initial configuration)')
     end if
-    if (allocated(eq_all)) deallocate (eq_all)
-    allocate (eq_all(ndf, m%n_nodes))
-    eq_all = reshape([(i, i = 1, ndf * m%n_nodes)], [ndf, m%n_nodes])
-    on = .true.
-    node = 0
-    if (present(quiet)) then
-      if (quiet) return
-    end if
-    write (*, '(a)') '  contact: curve ' // trim(m%contact%curve) // ', law ' // trim(m%contact%law) // ', penalty ' &
-      // str(m%contact%penalty) // ', friction ' // str(m%contact%friction) // trim(merge(', self-contact', &
-      '              ', m%contact%self_contact)) // ', ' // str(m%contact%n_pairs) // ' group pair(s), tangent ' &
-      // trim(m%contact%tangent)
-  end subroutine contact_hook_init
+  end subroutine contact_hook_build
 
-  !> Adds the contact part of the internal force to r (free dofs, numbered
-  !> by eq) and to fint (all dofs), and its tangent to sys if want_tangent.
-  subroutine contact_hook_forces(m, eq, want_tangent, sys, r, fint)
+  !> The library options the scene sets (&contact search_margin, threads,
+  !> max_handover_hops, max_candidates: b2b_model_set_real/_int on model;
+  !> parallel_angle, warm_start, max_iterations: b2b_params_set_real/_int
+  !> on params, before it is finalized), passed as they are. The first the
+  !> library refuses ends it: ierr, the library's message and its key.
+  subroutine contact_hook_options(m, model, params, ierr, errmsg, key)
+    type(scene_model), intent(in) :: m
+    type(b2b_model), intent(inout) :: model
+    type(b2b_params), intent(inout) :: params
+    integer, intent(out) :: ierr
+    character(len=*), intent(out) :: errmsg
+    character(len=:), allocatable, intent(out) :: key
+    integer :: k
+    ierr = 0
+    errmsg = ''
+    key = ''
+    do k = 1, m%contact%n_options
+      key = trim(m%contact%option_key(k))
+      associate (v => m%contact%option_value(k))
+        select case (m%contact%option_kind(k))
+        case (option_model_real); call b2b_model_set_real(model, key, v, ierr, errmsg)
+        case (option_model_int); call b2b_model_set_int(model, key, nint(v), ierr, errmsg)
+        case (option_params_real); call b2b_params_set_real(params, key, v, ierr, errmsg)
+        case (option_params_int); call b2b_params_set_int(params, key, nint(v), ierr, errmsg)
+        end select
+      end associate
+      if (ierr /= 0) return
+    end do
+  end subroutine contact_hook_options
+
+  !> Updates the model at the positions m%x and adds the contact part of the
+  !> internal force to r (free dofs, numbered by eq) and to fint (all dofs),
+  !> and its tangent to sys if want_tangent. ok = .false. (why: the model's
+  !> message) if the update failed; nothing is added then.
+  subroutine contact_hook_forces(model, m, eq, want_tangent, sys, r, fint, ok, why)
+    type(b2b_model), intent(inout) :: model
     type(scene_model), intent(in) :: m
     integer, intent(in) :: eq(:, :)
     logical, intent(in) :: want_tangent
     type(linear_system), intent(inout) :: sys
     real(dp), intent(inout) :: r(:), fint(:, :)
+    logical, intent(out) :: ok
+    character(len=:), allocatable, intent(out) :: why
     real(dp), allocatable :: f_all(:)
-    integer :: ierr, k, need, lo, hi, s, e
+    integer, allocatable :: eq_all(:, :)
+    integer :: ierr, i
     character(len=512) :: msg
 
-    failed = .false.
-    if (.not. on) return
+    ok = .true.
+    why = ''
     call b2b_model_update(model, m%x, want_tangent, ierr, msg)
     if (ierr /= 0) then
-      failed = .true.
-      fail_msg = msg
+      ok = .false.
+      why = 'contact update failed: ' // trim(msg)
       return
     end if
-    updated = .true.
-    call refresh()
     call b2b_model_add_residual(model, eq, r, ierr, msg)
     call check(ierr, msg, 'add_residual')
+    ! the contact part of f_int on every dof (every dof numbered)
+    eq_all = reshape([(i, i = 1, ndf * m%n_nodes)], [ndf, m%n_nodes])
     allocate (f_all(size(fint)))
     f_all = 0.0_dp
     call b2b_model_add_residual(model, eq_all, f_all, ierr, msg)
@@ -249,160 +249,68 @@ contains
       call b2b_model_add_tangent_banded(model, eq, sys%kl, sys%ku, sys%a, ierr, msg)
       if (ierr == B2B_ERR_RANGE) then
         ! a contact couples equations beyond the band: the width it needs
-        need = 0
-        do k = 1, last%n
-          lo = huge(1)
-          hi = 0
-          do s = 1, 8
-            if (last%c(k)%nodes(s) <= 0) cycle
-            do e = 1, 3
-              if (eq(e, last%c(k)%nodes(s)) <= 0) cycle
-              lo = min(lo, eq(e, last%c(k)%nodes(s)))
-              hi = max(hi, eq(e, last%c(k)%nodes(s)))
-            end do
-          end do
-          if (hi > 0) need = max(need, hi - lo)
-        end do
         sys%overflow = .true.
-        sys%need = max(sys%need, need)
+        sys%need = max(sys%need, band_needed(model, eq))
       else
         call check(ierr, msg, 'add_tangent_banded')
       end if
     end if
   end subroutine contact_hook_forces
 
-  !> The active contacts and statistics of the last update into `last`.
-  subroutine refresh()
-    integer :: n, k, ierr
+  !> The half bandwidth the active contacts of the last update need: the
+  !> widest span of the equations of one contact's nodes.
+  integer function band_needed(model, eq) result(need)
+    type(b2b_model), intent(in) :: model
+    integer, intent(in) :: eq(:, :)
+    integer :: n, k, s, e, lo, hi, nodes(8), ierr
     character(len=512) :: msg
     call b2b_model_contact_count(model, n, ierr, msg)
     call check(ierr, msg, 'contact_count')
-    if (.not. allocated(last%c)) allocate (last%c(max(n, 16)))
-    if (size(last%c) < n) then
-      deallocate (last%c)
-      allocate (last%c(2 * n))
-    end if
-    last%n = n
+    need = 0
     do k = 1, n
-      call b2b_model_get_contact(model, k, nodes=last%c(k)%nodes, pair=last%c(k)%pair, info=last%c(k)%info, &
-                                 ierr=ierr, errmsg=msg)
+      call b2b_model_get_contact(model, k, nodes=nodes, ierr=ierr, errmsg=msg)
       call check(ierr, msg, 'get_contact ' // str(k))
+      lo = huge(1)
+      hi = 0
+      do s = 1, 8
+        if (nodes(s) <= 0) cycle
+        do e = 1, 3
+          if (eq(e, nodes(s)) <= 0) cycle
+          lo = min(lo, eq(e, nodes(s)))
+          hi = max(hi, eq(e, nodes(s)))
+        end do
+      end do
+      if (hi > 0) need = max(need, hi - lo)
     end do
-    call b2b_model_stats(model, last%counts, last%totals, ierr, msg)
-    call check(ierr, msg, 'stats')
-    if (debug) write (*, '(a,16i5)') '      [contact counts]', last%counts
-    if (debug .and. n > 0) write (*, '(a,4i4,6es12.4)') '      [c1]', last%c(1)%pair, last%c(1)%info(1:2), &
-      last%c(1)%info(12:13), last%c(1)%info(3:5:2)
-  end subroutine refresh
+  end function band_needed
 
   !> Pairs of beams whose axes lie through each other in the last update
   !> (B2B_COUNT_CROSSED). Within the iterations the signed gap pushes them
-  !> back; a converged state that still has one is cut back (solver): a
-  !> penalty cannot resolve an axis that went through another beam.
-  integer function contact_hook_crossed() result(n)
-    n = 0
-    if (on .and. updated) n = last%counts(B2B_IX_COUNT_CROSSED)
+  !> back; a converged state that still has one is cut back by the caller:
+  !> a penalty cannot resolve an axis that went through another beam.
+  integer function contact_hook_crossed(model) result(n)
+    type(b2b_model), intent(in) :: model
+    integer :: counts(B2B_MODEL_COUNTS_LEN), ierr
+    character(len=512) :: msg
+    call b2b_model_stats(model, counts, ierr=ierr, errmsg=msg)
+    call check(ierr, msg, 'stats')
+    n = counts(B2B_IX_COUNT_CROSSED)
   end function contact_hook_crossed
 
-  !> .true. (with the model's message) if the last update failed.
-  logical function contact_hook_failed(why) result(f)
-    character(len=:), allocatable, intent(out) :: why
-    f = failed
-    why = 'contact update failed: ' // trim(fail_msg)
-  end function contact_hook_failed
-
-  !> A number that changes when the set of active contacts (their pairs) does.
-  integer(int64) function contact_hook_signature() result(h)
-    integer :: k, i
-    h = int(last%n, int64)
-    do k = 1, last%n
-      do i = 1, 4
-        ! modulo a prime below 2^30, so that h * 1000003 stays far inside int64
-        h = modulo(h * 1000003_int64 + int(last%c(k)%pair(i), int64), 1000000007_int64)
-      end do
-    end do
-  end function contact_hook_signature
-
-  !> The contacts and statistics of the last update (n = 0 before any).
-  subroutine contact_hook_snapshot(s)
-    type(contact_snapshot), intent(out) :: s
-    s%n = last%n
-    allocate (s%c(last%n))
-    if (last%n > 0) s%c = last%c(1:last%n)
-    s%counts = last%counts
-    s%totals = last%totals
-    s%audit_found = audit_total
-  end subroutine contact_hook_snapshot
-
-  !> The interpenetration audit of the converged update (before its commit,
-  !> so that pairs crossed since the last commit are told): prints every pair
-  !> that overlaps by more than audit_tolerance of the smaller radius with no
-  !> force, and adds the count to the run's total (in the snapshot).
-  subroutine contact_hook_audit(m, step)
-    type(scene_model), intent(in) :: m
-    integer, intent(in) :: step
-    integer :: n, k, ierr
-    integer, allocatable :: pairs(:, :), reasons(:)
-    real(dp), allocatable :: overlap(:)
-    character(len=512) :: msg
-    if (.not. (on .and. m%contact%enabled .and. updated)) return
-    call b2b_model_audit(model, audit_tolerance, n, ierr=ierr, errmsg=msg)
-    call check(ierr, msg, 'audit')
-    if (n == 0) return
-    allocate (pairs(4, n), reasons(n), overlap(n))
-    call b2b_model_audit(model, audit_tolerance, n, pairs, overlap, reasons, ierr, msg)
-    call check(ierr, msg, 'audit')
-    audit_total = audit_total + n
-    write (*, '(2x,a,i0,a,i0,a)') 'audit, step ', step, ': ', n, ' pair(s) overlap with no force'
-    do k = 1, n
-      write (*, '(4x,a,i0,a,i0,a,i0,a,i0,a,es10.3,a,es9.2,a)') 'beam ', pairs(1, k), ' segment ', pairs(2, k), &
-        ' / beam ', pairs(3, k), ' segment ', pairs(4, k), ': overlap ', overlap(k), ' (', &
-        overlap(k) / min(m%beam_radius(pairs(1, k)), m%beam_radius(pairs(3, k))), ' r), ' // &
-        trim(audit_reason(reasons(k)))
-    end do
-  end subroutine contact_hook_audit
-
-  function audit_reason(r) result(name)
-    integer, intent(in) :: r
-    character(len=:), allocatable :: name
-    select case (r)
-    case (B2B_AUDIT_PARALLEL); name = 'parallel (below parallel_angle)'
-    case (B2B_AUDIT_OUTSIDE_BOTH); name = 'outside on both sides (a convex joint or a beam end)'
-    case (B2B_AUDIT_NEVER_EVALUATED); name = 'never evaluated (not a candidate of the search)'
-    case (B2B_AUDIT_EXCLUDED_SELF); name = 'excluded by the self-contact length'
-    case (B2B_AUDIT_CROSSED); name = 'crossed since the last commit'
-    case (B2B_AUDIT_OTHER); name = 'other'
-    case default; name = 'unknown reason ' // str(r)
-    end select
-  end function audit_reason
-
-  subroutine contact_hook_commit(m)
-    type(scene_model), intent(in) :: m
+  subroutine contact_hook_commit(model)
+    type(b2b_model), intent(inout) :: model
     integer :: ierr
     character(len=512) :: msg
-    if (.not. (on .and. m%contact%enabled .and. updated)) return
     call b2b_model_commit(model, ierr, msg)
     call check(ierr, msg, 'commit')
-    updated = .false.
   end subroutine contact_hook_commit
 
-  subroutine contact_hook_revert(m)
-    type(scene_model), intent(in) :: m
+  subroutine contact_hook_revert(model)
+    type(b2b_model), intent(inout) :: model
     integer :: ierr
     character(len=512) :: msg
-    if (.not. (on .and. m%contact%enabled .and. updated)) return
     call b2b_model_revert(model, ierr, msg)
     call check(ierr, msg, 'revert')
-    updated = .false.
-    last%n = 0
   end subroutine contact_hook_revert
-
-  !> Frees the model at the end of a run.
-  subroutine contact_hook_finish()
-    if (on) call b2b_model_destroy(model)
-    on = .false.
-    updated = .false.
-    last%n = 0
-  end subroutine contact_hook_finish
 
 end module demo_contact_hook

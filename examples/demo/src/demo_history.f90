@@ -7,6 +7,11 @@ module demo_history
 
   integer, parameter, public :: max_norms = 64
 
+  !> What the step line and the summaries print for a rate that cannot be
+  !> measured (step_row%rate < 0), right-aligned like the f5.2 of a rate.
+  !> UTF-8, as the trade table's "—".
+  character(len=*), parameter, public :: rate_unmeasured = '   —'
+
   type, public :: step_row
     integer :: step = 0, iterations = 0, cutbacks = 0
     real(dp) :: lam = 0.0_dp

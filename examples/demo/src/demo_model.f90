@@ -9,6 +9,11 @@ module demo_model
 
   integer, parameter, public :: name_len = 1024
 
+  !> Kinds of the library options of &contact (contact_settings%option_kind).
+  integer, parameter, public :: option_model_real = 1, option_model_int = 2, option_params_real = 3, &
+                                option_params_int = 4
+  integer, parameter, public :: max_contact_options = 16
+
   !> Contact modelling, read and validated now, handed to the contact model
   !> by demo_contact_hook once it exists.
   type, public :: contact_settings
@@ -23,6 +28,13 @@ module demo_model
     logical :: self_contact = .false.
     integer :: n_pairs = 0
     integer, allocatable :: pairs(:, :)      !< (2, n_pairs): contact groups that interact
+    ! the library's options the scene sets (&contact keys of the same name),
+    ! passed as they are: b2b_model_set_real/_int (model options) or
+    ! b2b_params_set_real/_int (parameter set); the library checks them
+    integer :: n_options = 0
+    character(len=24) :: option_key(max_contact_options) = ''
+    integer :: option_kind(max_contact_options) = 0   !< option_model_real ... option_params_int
+    real(dp) :: option_value(max_contact_options) = 0.0_dp  !< an int option's value is whole
   end type contact_settings
 
   !> What the program checks at the end of a run (&check group; kind '' = none).
@@ -56,7 +68,7 @@ module demo_model
     ! beams (chains of consecutive nodes; a ring's last element closes it)
     integer, allocatable :: beam_first_node(:), beam_n_nodes(:), beam_first_el(:), beam_n_el(:)
     logical, allocatable :: beam_closed(:)
-    real(dp), allocatable :: beam_radius(:) !< contact and plotting radius
+    real(dp), allocatable :: beam_radius(:) !< contact and plotting radius (&material contact_radius)
     integer, allocatable :: beam_group(:)   !< contact group
 
     ! boundary conditions and loads, per unit load factor

@@ -25,10 +25,11 @@ module demo_output
   use demo_history, only: run_history
   use demo_rotation, only: quat_to_rotvec
   use demo_errors, only: fatal
-  use demo_contact_hook, only: contact_snapshot, contact_hook_snapshot, contact_point
+  use demo_contact_report, only: contact_snapshot, contact_report_snapshot, contact_point
   implicit none
   private
   public :: output_begin, output_step, output_finish, output_path, output_remove_stale, output_contacts
+  public :: output_prepare_dir
 
   integer :: n_files = 0
   real(dp), allocatable :: file_lam(:)
@@ -66,6 +67,50 @@ contains
     call output_remove_stale(m%out_dir, m%name)
   end subroutine output_begin
 
+  !> Makes sure the output directory dir exists and takes files, before any
+  !> work: a file <name>_write_test.tmp is created there and deleted; if
+  !> that fails, the directory is created (mkdir -p, parents included) and
+  !> the test repeated. A directory that cannot be created or written is a
+  !> fatal error naming it (where stands for where it came from, e.g. 'the
+  !> second argument'), so that a run never solves for minutes and then
+  !> finds it cannot write its result.
+  subroutine output_prepare_dir(dir, name, where)
+    character(len=*), intent(in) :: dir, name, where
+    character(len=:), allocatable :: probe, quoted
+    character(len=256) :: iomsg
+    integer :: stat, cstat, i
+    probe = trim(dir) // '/' // trim(name) // '_write_test.tmp'
+    if (try_write(probe, iomsg)) return
+    ! not there (or not writable): create it with its parents; the name
+    ! goes to the shell in single quotes, a quote in it as '\''
+    quoted = ''
+    do i = 1, len_trim(dir)
+      if (dir(i:i) == '''') then
+        quoted = quoted // '''\'''''
+      else
+        quoted = quoted // dir(i:i)
+      end if
+    end do
+    stat = 1
+    cstat = 0
+    call execute_command_line('mkdir -p -- ''' // quoted // ''' 2> /dev/null', exitstat=stat, cmdstat=cstat)
+    if (cstat /= 0 .or. stat /= 0) call fatal('output directory ''' // trim(dir) // ''' (' // where &
+      // ') cannot be created (mkdir -p failed: is a part of the path a regular file, or not writable?);' &
+      // ' give a directory that exists or can be created')
+    if (.not. try_write(probe, iomsg)) call fatal('output directory ''' // trim(dir) // ''' (' // where &
+      // ') takes no files: ' // probe // ': ' // trim(iomsg) // '; give a writable directory')
+  contains
+    logical function try_write(path, msg) result(ok)
+      character(len=*), intent(in) :: path
+      character(len=*), intent(out) :: msg
+      integer :: u, ios2
+      msg = ''
+      open (newunit=u, file=path, status='replace', action='write', iostat=ios2, iomsg=msg)
+      ok = ios2 == 0
+      if (ok) close (u, status='delete', iostat=ios2)
+    end function try_write
+  end subroutine output_prepare_dir
+
   !> Deletes the complete-run files of scene `name` in dir, if any.
   subroutine output_remove_stale(dir, name)
     character(len=*), intent(in) :: dir, name
@@ -101,7 +146,7 @@ contains
     type(contact_snapshot) :: snap
 
     if (.not. m%vtk) return
-    call contact_hook_snapshot(snap)
+    call contact_report_snapshot(snap)
     if (step == 0) snap%n = 0
     write (tag, '(a,i4.4,a)') '_', step, '.vtp'
     path = output_path(m, trim(tag))

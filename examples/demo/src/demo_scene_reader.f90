@@ -5,7 +5,10 @@
 module demo_scene_reader
   use demo_kinds, only: dp, pi, ndf
   use demo_errors, only: fatal, str
-  use demo_model, only: scene_model, name_len, max_ramp_points
+  use demo_model, only: scene_model, name_len, max_ramp_points, option_model_real, option_model_int, &
+                        option_params_real, option_params_int
+  use demo_contact_hook, only: contact_hook_options
+  use b2b, only: b2b_model, b2b_params, b2b_model_create, b2b_model_destroy, b2b_params_create, b2b_params_destroy
   use demo_nml_scan, only: nml_index, nml_scan, lower
   use demo_geometry, only: line_points, arc_points, element_frame
   use demo_rotation, only: quat_identity
@@ -19,14 +22,16 @@ module demo_scene_reader
 
   character(len=*), parameter :: groups_valid = 'scene material beam support load motion output contact check'
   character(len=*), parameter :: keys_scene = 'title n_steps max_iter max_cutbacks tol solver'
-  character(len=*), parameter :: keys_material = 'id E nu radius A Iy Iz J'
+  character(len=*), parameter :: keys_material = 'id E nu radius A Iy Iz J contact_radius'
   character(len=*), parameter :: keys_beam = 'shape p1 p2 centre start axis angle points n_el material group up'
-  character(len=*), parameter :: keys_support = 'beam node all dofs'
-  character(len=*), parameter :: keys_load = 'beam node all force moment ramp'
-  character(len=*), parameter :: keys_motion = 'beam node dof value ramp'
+  character(len=*), parameter :: keys_support = 'beam node all group dofs'
+  character(len=*), parameter :: keys_load = 'beam node all group force moment ramp'
+  character(len=*), parameter :: keys_motion = 'beam node all group dof value ramp'
   character(len=*), parameter :: keys_output = 'vtk csv vtk_every dir monitor_beam monitor_node'
   character(len=*), parameter :: keys_contact = 'curve law penalty regularization_gap friction ' &
-                                                // 'tangential_penalty self_contact pairs tangent'
+                                                // 'tangential_penalty self_contact pairs tangent ' &
+                                                // 'search_margin threads max_handover_hops max_candidates ' &
+                                                // 'parallel_angle warm_start max_iterations'
   character(len=*), parameter :: keys_check = 'kind beam_a beam_b tolerance min_rate min_contacts ' &
                                               // 'min_nodes_crossed reference'
 
@@ -174,8 +179,8 @@ contains
     integer, allocatable, intent(out) :: mat_id(:)
     real(dp), allocatable, intent(out) :: mat_stiff(:, :), mat_radius(:)
     integer :: id
-    real(dp) :: e, nu, radius, a, iy, iz, j
-    namelist /material/ id, e, nu, radius, a, iy, iz, j
+    real(dp) :: e, nu, radius, a, iy, iz, j, contact_radius
+    namelist /material/ id, e, nu, radius, a, iy, iz, j, contact_radius
     integer :: n_mat, k, ios
     character(len=256) :: iomsg
     ! materials
@@ -184,6 +189,7 @@ contains
     rewind (u)
     do k = 1, n_mat
       id = k; e = unset; nu = unset; radius = unset; a = unset; iy = unset; iz = unset; j = unset
+      contact_radius = unset
       read (u, nml=material, iostat=ios, iomsg=iomsg)
       if (ios /= 0) call read_failed('material', k, ios, iomsg)
       call need_real('material', k, 'E', [e])
@@ -211,7 +217,14 @@ contains
         call positive('material', k, 'Iy', iy)
         call positive('material', k, 'Iz', iz)
         call positive('material', k, 'J', j)
-        radius = sqrt(a / pi)   ! for plotting: the circle of the same area
+        radius = sqrt(a / pi)   ! the circle of the same area
+      end if
+      ! the contact (and plotting) radius: by default the section's radius,
+      ! or that of the circle of area A; contact_radius sets it apart from
+      ! the stiffness (A, I, J stay as given or as radius made them)
+      if (idx%has_key('material', k, 'contact_radius')) then
+        call positive('material', k, 'contact_radius', contact_radius)
+        radius = contact_radius
       end if
       if (any(mat_id(1:k - 1) == id)) call bad('material', k, 'id', 'id ' // str(id) // ' is used twice')
       mat_id(k) = id
@@ -426,70 +439,96 @@ contains
   subroutine read_supports(u, m)
     integer, intent(in) :: u
     type(scene_model), intent(inout) :: m
-    integer :: beam, node, k, ios, g, d
+    integer :: beam, node, group, k, ios, i, d
     logical :: all
     character(len=16) :: dofs
     character(len=256) :: iomsg
-    namelist /support/ beam, node, all, dofs
+    integer, allocatable :: nodes(:)
+    namelist /support/ beam, node, all, group, dofs
     rewind (u)
     do k = 1, idx%count('support')
-      beam = iunset; node = iunset; all = .false.; dofs = ''
+      beam = iunset; node = iunset; all = .false.; group = iunset; dofs = ''
       read (u, nml=support, iostat=ios, iomsg=iomsg)
       if (ios /= 0) call read_failed('support', k, ios, iomsg)
       if (len_trim(dofs) /= ndf .or. verify(trim(dofs), '01') /= 0) call bad('support', k, 'dofs', &
           '''' // trim(dofs) // ''' is not 6 characters 0/1 (ux uy uz rx ry rz; 1 = fixed), e.g. dofs = ''111111''')
-      if (all) then
-        call need_int('support', k, 'beam', beam)
-        if (beam < 1 .or. beam > m%n_beams) call bad('support', k, 'beam', 'beam ' // str(beam) &
-            // ' does not exist; the scene has beams 1..' // str(m%n_beams))
-        if (idx%has_key('support', k, 'node')) call bad('support', k, 'node', 'given with all = .true.: give one of them')
-        do g = m%beam_first_node(beam), m%beam_first_node(beam) + m%beam_n_nodes(beam) - 1
-          call fix(g)
+      call entry_nodes(m, 'support', k, beam, node, all, group, nodes)
+      do i = 1, size(nodes)
+        do d = 1, ndf
+          if (dofs(d:d) == '1') m%fixed(d, nodes(i)) = .true.
         end do
-      else
-        g = node_of(m, 'support', k, beam, node)
-        call fix(g)
-      end if
-    end do
-  contains
-    subroutine fix(g)
-      integer, intent(in) :: g
-      do d = 1, ndf
-        if (dofs(d:d) == '1') m%fixed(d, g) = .true.
       end do
-    end subroutine fix
+    end do
   end subroutine read_supports
+
+  !> The global nodes one &support, &load or &motion entry (number k of
+  !> group grp) applies to: node of beam; with all = .true. every node of
+  !> beam, or, given group instead of beam, every node of every beam of
+  !> that contact group (e.g. a rigid indenter made of several beams).
+  subroutine entry_nodes(m, grp, k, beam, node, all, group, nodes)
+    type(scene_model), intent(in) :: m
+    character(len=*), intent(in) :: grp
+    integer, intent(in) :: k, beam, node, group
+    logical, intent(in) :: all
+    integer, allocatable, intent(out) :: nodes(:)
+    integer :: b, i, n
+    if (.not. all) then
+      if (idx%has_key(grp, k, 'group')) call bad(grp, k, 'group', 'needs all = .true. (every node of the ' &
+          // 'beams of that group); for one node give beam and node')
+      allocate (nodes(1))
+      nodes(1) = node_of(m, grp, k, beam, node)
+      return
+    end if
+    if (idx%has_key(grp, k, 'node')) call bad(grp, k, 'node', 'given with all = .true.: give one of them')
+    if (idx%has_key(grp, k, 'group')) then
+      if (idx%has_key(grp, k, 'beam')) call bad(grp, k, 'group', 'given with beam: with all = .true. give ' &
+          // 'beam (its nodes) or group (the nodes of its beams), not both')
+      n = sum(m%beam_n_nodes, mask=m%beam_group == group)
+      if (n == 0) call bad(grp, k, 'group', 'no beam belongs to contact group ' // str(group) &
+          // ' (set group = on the &beam groups)')
+      allocate (nodes(n))
+      n = 0
+      do b = 1, m%n_beams
+        if (m%beam_group(b) /= group) cycle
+        do i = 0, m%beam_n_nodes(b) - 1
+          n = n + 1
+          nodes(n) = m%beam_first_node(b) + i
+        end do
+      end do
+    else
+      if (beam == iunset) call bad(grp, k, 'beam', 'missing: with all = .true. give beam = (its nodes) or ' &
+          // 'group = (the nodes of every beam of that contact group)')
+      if (beam < 1 .or. beam > m%n_beams) call bad(grp, k, 'beam', 'beam ' // str(beam) &
+          // ' does not exist; the scene has beams 1..' // str(m%n_beams))
+      allocate (nodes(m%beam_n_nodes(beam)))
+      do i = 1, m%beam_n_nodes(beam)
+        nodes(i) = m%beam_first_node(beam) + i - 1
+      end do
+    end if
+  end subroutine entry_nodes
 
   subroutine read_loads(u, m)
     integer, intent(in) :: u
     type(scene_model), intent(inout) :: m
-    integer :: beam, node, k, ios, g, g1, g2, id
+    integer :: beam, node, group, k, ios, g, i, id
     logical :: all
     real(dp) :: force(3), moment(3), ramp(2 * max_ramp_points)
     character(len=256) :: iomsg
-    namelist /load/ beam, node, all, force, moment, ramp
+    integer, allocatable :: nodes(:)
+    namelist /load/ beam, node, all, group, force, moment, ramp
     rewind (u)
     do k = 1, idx%count('load')
-      beam = iunset; node = iunset; all = .false.; force = unset; moment = unset; ramp = unset
+      beam = iunset; node = iunset; all = .false.; group = iunset; force = unset; moment = unset; ramp = unset
       read (u, nml=load, iostat=ios, iomsg=iomsg)
       if (ios /= 0) call read_failed('load', k, ios, iomsg)
-      if (all) then
-        call need_int('load', k, 'beam', beam)
-        if (beam < 1 .or. beam > m%n_beams) call bad('load', k, 'beam', 'beam ' // str(beam) &
-            // ' does not exist; the scene has beams 1..' // str(m%n_beams))
-        if (idx%has_key('load', k, 'node')) call bad('load', k, 'node', 'given with all = .true.: give one of them')
-        g1 = m%beam_first_node(beam)
-        g2 = g1 + m%beam_n_nodes(beam) - 1
-      else
-        g1 = node_of(m, 'load', k, beam, node)
-        g2 = g1
-      end if
+      call entry_nodes(m, 'load', k, beam, node, all, group, nodes)
       if (any(force < -0.5_dp * huge(1.0_dp)) .and. any(moment < -0.5_dp * huge(1.0_dp))) &
         call bad('load', k, 'force', 'missing: give force = (3 components) and/or moment = (3 components)')
       if (idx%has_key('load', k, 'force')) call need_real('load', k, 'force', force)
       if (idx%has_key('load', k, 'moment')) call need_real('load', k, 'moment', moment)
       id = new_ramp(m, 'load', k, ramp)
-      do g = g1, g2
+      do i = 1, size(nodes)
+        g = nodes(i)
         if (idx%has_key('load', k, 'force')) then
           call set_ramp(m%fext_ramp(1:3, g), m%fext(1:3, g), force, id, 'load', k)
           m%fext(1:3, g) = m%fext(1:3, g) + force
@@ -561,22 +600,27 @@ contains
   subroutine read_motions(u, m)
     integer, intent(in) :: u
     type(scene_model), intent(inout) :: m
-    integer :: beam, node, dof, k, ios, g
+    integer :: beam, node, group, dof, k, ios, i, id
+    logical :: all
     real(dp) :: value, ramp(2 * max_ramp_points)
     character(len=256) :: iomsg
-    namelist /motion/ beam, node, dof, value, ramp
+    integer, allocatable :: nodes(:)
+    namelist /motion/ beam, node, all, group, dof, value, ramp
     rewind (u)
     do k = 1, idx%count('motion')
-      beam = iunset; node = iunset; dof = iunset; value = unset; ramp = unset
+      beam = iunset; node = iunset; all = .false.; group = iunset; dof = iunset; value = unset; ramp = unset
       read (u, nml=motion, iostat=ios, iomsg=iomsg)
       if (ios /= 0) call read_failed('motion', k, ios, iomsg)
-      g = node_of(m, 'motion', k, beam, node)
+      call entry_nodes(m, 'motion', k, beam, node, all, group, nodes)
       call need_int('motion', k, 'dof', dof)
       if (dof < 1 .or. dof > ndf) call bad('motion', k, 'dof', 'is ' // str(dof) // '; dofs are 1..6 (ux uy uz rx ry rz)')
       call need_real('motion', k, 'value', [value])
-      m%fixed(dof, g) = .true.
-      m%prescribed(dof, g) = value
-      m%presc_ramp(dof, g) = new_ramp(m, 'motion', k, ramp)
+      id = new_ramp(m, 'motion', k, ramp)
+      do i = 1, size(nodes)
+        m%fixed(dof, nodes(i)) = .true.
+        m%prescribed(dof, nodes(i)) = value
+        m%presc_ramp(dof, nodes(i)) = id
+      end do
     end do
   end subroutine read_motions
 
@@ -610,11 +654,17 @@ contains
     logical :: self_contact
     integer :: pairs(2, max_pairs), ios, n, i
     character(len=256) :: iomsg
+    ! the library's options, passed as they are (demo_contact_hook)
+    real(dp) :: search_margin, parallel_angle
+    integer :: threads, max_handover_hops, max_candidates, warm_start, max_iterations
     namelist /contact/ curve, law, penalty, regularization_gap, friction, tangential_penalty, self_contact, pairs, &
-                       tangent
+                       tangent, search_margin, threads, max_handover_hops, max_candidates, parallel_angle, &
+                       warm_start, max_iterations
     if (idx%count('contact') == 0) return
     curve = ''; law = 'linear'; penalty = unset; regularization_gap = 0.0_dp; friction = 0.0_dp
     tangential_penalty = 0.0_dp; self_contact = .false.; pairs = 0; tangent = 'exact'
+    search_margin = 0.0_dp; parallel_angle = 0.0_dp; threads = 0; max_handover_hops = 0; max_candidates = 0
+    warm_start = 0; max_iterations = 0
     rewind (u)
     read (u, nml=contact, iostat=ios, iomsg=iomsg)
     if (ios /= 0) call read_failed('contact', 1, ios, iomsg)
@@ -658,7 +708,49 @@ contains
     m%contact%tangential_penalty = tangential_penalty; m%contact%self_contact = self_contact
     m%contact%n_pairs = n
     m%contact%pairs = pairs(:, 1:n)
+    call option('search_margin', option_model_real, search_margin)
+    call option('threads', option_model_int, real(threads, dp))
+    call option('max_handover_hops', option_model_int, real(max_handover_hops, dp))
+    call option('max_candidates', option_model_int, real(max_candidates, dp))
+    call option('parallel_angle', option_params_real, parallel_angle)
+    call option('warm_start', option_params_int, real(warm_start, dp))
+    call option('max_iterations', option_params_int, real(max_iterations, dp))
+    call check_options(m)
+  contains
+    !> Records a library option the scene gives (and only then).
+    subroutine option(key, kind, value)
+      character(len=*), intent(in) :: key
+      integer, intent(in) :: kind
+      real(dp), intent(in) :: value
+      if (.not. idx%has_key('contact', 1, key)) return
+      m%contact%n_options = m%contact%n_options + 1
+      m%contact%option_key(m%contact%n_options) = key
+      m%contact%option_kind(m%contact%n_options) = kind
+      m%contact%option_value(m%contact%n_options) = value
+    end subroutine option
   end subroutine read_contact
+
+  !> The library's own check of the options of &contact, now, with the line:
+  !> they are set on a model and a parameter set made for it, exactly as the
+  !> contact hook sets them later, and the first refused stops the program
+  !> with the library's message.
+  subroutine check_options(m)
+    type(scene_model), intent(in) :: m
+    type(b2b_model) :: model
+    type(b2b_params) :: params
+    integer :: ierr
+    character(len=512) :: msg
+    character(len=:), allocatable :: key
+    if (m%contact%n_options == 0) return
+    call b2b_model_create(model, ierr, msg)
+    if (ierr /= 0) call fatal('contact model: create: ' // trim(msg))
+    call b2b_params_create(params, ierr, msg)
+    if (ierr /= 0) call fatal('contact model: parameters: ' // trim(msg))
+    call contact_hook_options(m, model, params, ierr, msg, key)
+    call b2b_params_destroy(params)
+    call b2b_model_destroy(model)
+    if (ierr /= 0) call bad('contact', 1, key, trim(msg))
+  end subroutine check_options
 
   subroutine read_check(u, m)
     integer, intent(in) :: u

@@ -27,10 +27,12 @@ module demo_solver
   use demo_numbering, only: rcm_order, number_equations, half_bandwidth
   use demo_linear_system, only: linear_system, sys_setup, sys_solve
   use demo_assembly, only: assemble
-  use demo_contact_hook, only: contact_hook_init, contact_hook_commit, contact_hook_revert, contact_hook_failed, &
-                               contact_hook_signature, contact_hook_snapshot, contact_snapshot, contact_hook_audit, &
-                               contact_hook_crossed
-  use demo_history, only: run_history, step_row, iter_row
+  use demo_contact_hook, only: contact_hook_build, contact_hook_commit, contact_hook_revert, contact_hook_crossed
+  use demo_contact_report, only: contact_report_begin, contact_report_refresh, contact_report_forget, &
+                                 contact_report_signature, contact_report_snapshot, contact_snapshot, &
+                                 contact_report_audit
+  use b2b, only: b2b_model, b2b_model_destroy
+  use demo_history, only: run_history, step_row, iter_row, rate_unmeasured
   use demo_output, only: output_begin, output_step, output_finish, output_contacts
   use demo_checks, only: check_step
   use, intrinsic :: iso_fortran_env, only: int64
@@ -38,7 +40,7 @@ module demo_solver
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
-  public :: solve_scene, step_callback, newton_state, perturb_dof
+  public :: solve_scene, step_callback, newton_state, perturb_dof, convergence_rate
 
   abstract interface
     !> Called after each planned step has converged (tests check the state).
@@ -65,9 +67,28 @@ contains
   !> step rows of the run) and failed_step: when present, a step that does
   !> not converge within max_cutbacks ends the run with failed_step = that
   !> step (and no .pvd or CSV written) instead of stopping the program;
-  !> 0 when every step converged.
-  subroutine solve_scene(m, on_step, quiet, history, failed_step)
+  !> 0 when every step converged. model: the contact model, for a caller
+  !> that uses it after the run (and destroys it); without it the run's own
+  !> model is destroyed at its end.
+  subroutine solve_scene(m, on_step, quiet, history, failed_step, model)
     type(scene_model), intent(inout) :: m
+    procedure(step_callback), optional :: on_step
+    logical, intent(in), optional :: quiet
+    type(run_history), intent(out), optional :: history
+    integer, intent(out), optional :: failed_step
+    type(b2b_model), intent(inout), optional :: model
+    type(b2b_model) :: own
+    if (present(model)) then
+      call solve_with(m, model, on_step, quiet, history, failed_step)
+    else
+      call solve_with(m, own, on_step, quiet, history, failed_step)
+      call b2b_model_destroy(own)
+    end if
+  end subroutine solve_scene
+
+  subroutine solve_with(m, model, on_step, quiet, history, failed_step)
+    type(scene_model), intent(inout) :: m
+    type(b2b_model), intent(inout) :: model
     procedure(step_callback), optional :: on_step
     logical, intent(in), optional :: quiet
     type(run_history), intent(out), optional :: history
@@ -97,7 +118,8 @@ contains
     if (talk) write (*, '(a)') trim(m%name) // ': ' // trim(m%title)
     if (talk) write (*, '(2x,i0,a,i0,a,i0,a,i0,a,a)') m%n_nodes, ' nodes, ', m%n_elements, ' elements, ', ns%neq, &
       ' equations, half bandwidth ', ns%hb, ', solver ', trim(merge('dense dgesv  ', 'banded dgbsv ', ns%sys%dense))
-    call contact_hook_init(m, quiet=.not. talk)
+    if (m%contact%enabled) call contact_hook_build(model, m)
+    call contact_report_begin(m, quiet=.not. talk)
     call output_begin(m)
     call output_step(m, 0, 0.0_dp)
 
@@ -113,18 +135,19 @@ contains
         dlam = min(dlam, lam_target - lam)
         x_save = m%x
         q_save = m%q
-        call newton(m, ns, hist, step, lam, lam + dlam, ok, sub_iters, norms, sigs, n_norms, floor, why)
+        call newton(m, model, ns, hist, step, lam, lam + dlam, ok, sub_iters, norms, sigs, n_norms, floor, why)
         floor = rounding_floor(m)
         iters = iters + sub_iters
         if (ok) then
-          call contact_hook_audit(m, step)
-          call contact_hook_snapshot(snap)
-          call contact_hook_commit(m)
+          if (m%contact%enabled) call contact_report_audit(model, m, step)
+          call contact_report_snapshot(snap)
+          if (m%contact%enabled) call contact_hook_commit(model)
           lam = lam + dlam
         else
           m%x = x_save
           m%q = q_save
-          call contact_hook_revert(m)
+          if (m%contact%enabled) call contact_hook_revert(model)
+          call contact_report_forget()
           cut = cut + 1
           if (talk) write (*, '(2x,a,i0,a,f8.6,a,f8.6,a,4es10.2)') 'step ', step, ': no convergence from load ', lam, &
             ' to ', lam + dlam, ' (' // why // '), cutting the increment in half; |r|:', &
@@ -171,11 +194,12 @@ contains
     end do
     call output_finish(m, hist)
     if (present(history)) history = hist
-  end subroutine solve_scene
+  end subroutine solve_with
 
   !> One (sub)step from lam_old to lam_new. ok = .false. with a reason if it fails.
-  subroutine newton(m, ns, hist, step, lam_old, lam_new, ok, iters, norms, sigs, n_norms, noise, why)
+  subroutine newton(m, model, ns, hist, step, lam_old, lam_new, ok, iters, norms, sigs, n_norms, noise, why)
     type(scene_model), intent(inout) :: m
+    type(b2b_model), intent(inout) :: model
     type(newton_state), intent(inout) :: ns
     type(run_history), intent(inout) :: hist
     integer, intent(in) :: step
@@ -187,6 +211,7 @@ contains
     character(len=:), allocatable, intent(out) :: why
     integer :: it, node, info, widen
     character(len=:), allocatable :: cwhy
+    logical :: cok
     real(dp) :: nrm, ref, extent
     type(iter_row) :: irow
 
@@ -197,22 +222,23 @@ contains
     noise = 0.0_dp
     call prescribe(m, lam_old, lam_new)
     do it = 1, m%max_iter + 1
-      call assemble(m, ns%eq, lam_new, .true., ns%sys, ns%r, ns%fint)
+      call assemble(m, ns%eq, lam_new, .true., ns%sys, ns%r, ns%fint, model, cok, cwhy)
       widen = 0
       do
         if (.not. ns%sys%overflow) exit
-        if (contact_hook_failed(cwhy)) exit
+        if (.not. cok) exit
         ! couplings beyond the band (contacts between distant nodes): widen and redo
         widen = widen + 1
         if (widen > 2) call fatal(trim(m%file) // ': the band could not be widened to hold the contacts')
         ns%hb = max(ns%hb, ns%sys%need)
         call sys_setup(ns%sys, ns%neq, ns%hb, m%solver)
-        call assemble(m, ns%eq, lam_new, .true., ns%sys, ns%r, ns%fint)
+        call assemble(m, ns%eq, lam_new, .true., ns%sys, ns%r, ns%fint, model, cok, cwhy)
       end do
-      if (contact_hook_failed(cwhy)) then
+      if (.not. cok) then
         why = cwhy
         return
       end if
+      if (m%contact%enabled) call contact_report_refresh(model)
       nrm = norm2(ns%r)
       ref = max(norm2(external_force(m, lam_new)), norm2(ns%fint))
       ! the floor scales with the coordinates, capped at 10 times the scene's
@@ -227,7 +253,7 @@ contains
         sigs(1:n_norms - 1) = sigs(2:n_norms)
       end if
       norms(n_norms) = nrm
-      sigs(n_norms) = contact_hook_signature()
+      sigs(n_norms) = contact_report_signature()
       irow = iter_row(step=step, iteration=it - 1, lam=lam_new, norm=nrm, ref=ref)
       call hist%add_iter(irow)
       if (.not. ieee_is_finite(nrm)) then
@@ -242,9 +268,11 @@ contains
         ! Converged, but with beams whose axes passed through each other
         ! (B2B_COUNT_CROSSED): the step was too large for the contact to
         ! catch them, cut back.
-        if (contact_hook_crossed() > 0) then
-          why = str(contact_hook_crossed()) // ' pair(s) of beams passed through each other'
-          return
+        if (m%contact%enabled) then
+          if (contact_hook_crossed(model) > 0) then
+            why = str(contact_hook_crossed(model)) // ' pair(s) of beams passed through each other'
+            return
+          end if
         end if
         ok = .true.
         return
@@ -319,10 +347,13 @@ contains
   !> p = log(r_k / r_(k-1)) / log(r_(k-1) / r_(k-2)) on the last three norms
   !> after the first (r_0, the residual of the load or motion increment
   !> before any correction, is the size of the step, not a Newton iterate)
-  !> and above the round-off floor (the final norm is dropped when it lies
-  !> within 3 times the floor of rounding_floor, where it measures the
-  !> rounding, not the iteration). rate < 0: fewer than three usable norms. stable: the active
-  !> contacts (their pairs) were the same in those iterations.
+  !> and above the round-off floor (the final norms are dropped while they
+  !> lie within 3 times the floor of rounding_floor, where they measure the
+  !> rounding, not the iteration; a zero norm is always dropped).
+  !> rate < 0 (printed "rate —"): not measurable, fewer than three usable
+  !> norms after r_0. rate = 0: measured, but the three norms did not
+  !> decrease (no convergence order). stable: the active contacts (their
+  !> pairs) were the same in those iterations.
   subroutine convergence_rate(norms, sigs, floor, rate, stable)
     real(dp), intent(in) :: norms(:), floor
     integer(int64), intent(in) :: sigs(:)
@@ -332,11 +363,12 @@ contains
     n = size(norms)
     rate = -1.0_dp
     stable = .false.
-    if (n >= 1) then
-      if (norms(n) <= 3.0_dp * floor) n = n - 1
-    end if
+    do while (n >= 1)
+      if (norms(n) > 3.0_dp * floor .and. norms(n) > 0.0_dp) exit
+      n = n - 1
+    end do
     if (n < 4) return
-    if (.not. (norms(n) > 0.0_dp .and. norms(n - 1) < norms(n - 2) .and. norms(n) < norms(n - 1))) then
+    if (.not. (norms(n - 1) < norms(n - 2) .and. norms(n) < norms(n - 1))) then
       rate = 0.0_dp
     else
       rate = log(norms(n) / norms(n - 1)) / log(norms(n - 1) / norms(n - 2))
@@ -369,8 +401,11 @@ contains
     cbuf = ''
     if (contact) then
       write (cbuf, '(a,i3,a,es10.3,a,es10.3)') '  contacts', row%n_active, '  f_N', row%fn, '  f_T', row%ft
-      if (row%rate >= 0.0_dp) write (cbuf(len_trim(cbuf) + 1:), '(a,f5.2,a)') '  rate', row%rate, &
-        trim(merge('  ', ' *', row%stable))
+      if (row%rate >= 0.0_dp) then
+        write (cbuf(len_trim(cbuf) + 1:), '(a,f5.2,a)') '  rate', row%rate, trim(merge('  ', ' *', row%stable))
+      else
+        cbuf = trim(cbuf) // '  rate ' // rate_unmeasured   ! fewer than three usable norms
+      end if
     end if
     write (*, '(2x,a,4es10.2)', advance='no') trim(buf), last
     write (*, '(a)') trim(cbuf)

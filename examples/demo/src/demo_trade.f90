@@ -36,7 +36,7 @@ module demo_trade
   use demo_scene_reader, only: read_scene
   use demo_solver, only: solve_scene
   use demo_history, only: run_history
-  use demo_contact_hook, only: contact_hook_finish
+  use demo_output, only: output_prepare_dir
   use demo_errors, only: fatal, str
   use demo_nml_scan, only: lower
   use b2b, only: b2b_version
@@ -73,6 +73,7 @@ contains
 
     if (mode /= 'short' .and. mode /= 'full') call fatal('--trade-table: mode ''' // mode // ''' is not short or full')
     passed = .true.
+    call output_prepare_dir(out_dir, 'trade_table_' // mode, 'the output directory of --trade-table')
     call system_clock(c0, rate)
     md = trim(out_dir) // '/trade_table_' // mode // '.md'
     open (newunit=u, file=trim(md), status='replace', action='write', iostat=ios)
@@ -184,7 +185,6 @@ contains
     m%csv = .false.
     m%out_dir = out_dir
     call solve_scene(m, quiet=.true., history=h, failed_step=r%stopped)
-    call contact_hook_finish()
     call system_clock(c1)
     r%time = real(c1 - c0, dp) / real(rate, dp)
     r%n = h%n_steps

@@ -16,10 +16,11 @@ program test_contact_tangent
   use demo_numbering, only: rcm_order, number_equations, half_bandwidth
   use demo_linear_system, only: linear_system, sys_setup
   use demo_assembly, only: assemble
-
-  use demo_contact_hook, only: contact_snapshot, contact_hook_snapshot, contact_hook_finish
+  use demo_contact_report, only: contact_snapshot, contact_report_snapshot, contact_report_refresh
+  use b2b, only: b2b_model, b2b_model_destroy
   implicit none
   type(scene_model) :: m
+  type(b2b_model) :: model
   type(linear_system) :: dense, dummy
   type(contact_snapshot) :: snap, snap2
   character(len=1024) :: file, arg
@@ -38,7 +39,7 @@ program test_contact_tangent
   call read_scene(trim(file), m)
   m%vtk = .false.
   m%csv = .false.
-  call solve_scene(m, quiet=.true.)
+  call solve_scene(m, quiet=.true., model=model)
 
   allocate (order(m%n_nodes), eq(ndf, m%n_nodes), fint(ndf, m%n_nodes))
   call rcm_order(m%n_nodes, m%conn, order)
@@ -54,8 +55,9 @@ program test_contact_tangent
   end do
   call sys_setup(dense, neq, neq, 'dense')
   call sys_setup(dummy, neq, neq, 'dense')
-  call assemble(m, eq, 1.0_dp, .true., dense, r, fint)
-  call contact_hook_snapshot(snap)
+  call assemble(m, eq, 1.0_dp, .true., dense, r, fint, model)
+  call contact_report_refresh(model)
+  call contact_report_snapshot(snap)
   x_keep = m%x
   q_keep = m%q
   h = 1.0e-7_dp * maxval(m%el_l0)
@@ -64,11 +66,12 @@ program test_contact_tangent
       j = eq(d, node)
       if (j == 0) cycle
       call perturb_dof(m, node, d, +h)
-      call assemble(m, eq, 1.0_dp, .false., dummy, rp, fint)
+      call assemble(m, eq, 1.0_dp, .false., dummy, rp, fint, model)
       m%x = x_keep; m%q = q_keep
       call perturb_dof(m, node, d, -h)
-      call assemble(m, eq, 1.0_dp, .false., dummy, rm, fint)
-      call contact_hook_snapshot(snap2)
+      call assemble(m, eq, 1.0_dp, .false., dummy, rm, fint, model)
+      call contact_report_refresh(model)
+      call contact_report_snapshot(snap2)
       m%x = x_keep; m%q = q_keep
       if (snap2%n /= snap%n) then
         write (*, '(a)') 'FAIL: the active set changed under the differences; perturb less'
@@ -86,7 +89,7 @@ program test_contact_tangent
   ok = err <= tol .and. snap%n > 0
   ! freed here, not left to the end of the program (LeakSanitizer counts them)
   deallocate (order, eq, fint, r, rp, rm, kfd, x_keep, q_keep)
-  call contact_hook_finish()
+  call b2b_model_destroy(model)
   if (.not. ok) then
     write (*, '(a,es9.2)') 'FAIL: tangent with contact differs from the differences by more than ', tol
     error stop 1
