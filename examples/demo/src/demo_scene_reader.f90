@@ -8,9 +8,10 @@ module demo_scene_reader
   use demo_model, only: scene_model, name_len, max_ramp_points, option_model_real, option_model_int, &
                         option_params_real, option_params_int
   use demo_contact_hook, only: contact_hook_options
-  use b2b, only: b2b_model, b2b_params, b2b_model_create, b2b_model_destroy, b2b_params_create, b2b_params_destroy
+  use b2b, only: b2b_model, b2b_params, b2b_model_create, b2b_model_destroy, b2b_params_create, b2b_params_destroy, &
+                 B2B_CONTACT_TYPE_POINT, B2B_CONTACT_TYPE_LINE, B2B_CONTACT_TYPE_ALL_ANGLE
   use demo_nml_scan, only: nml_index, nml_scan, lower
-  use demo_geometry, only: line_points, arc_points, element_frame
+  use demo_geometry, only: straight_points => line_points, arc_points, element_frame
   use demo_rotation, only: quat_identity
   use, intrinsic :: iso_fortran_env, only: iostat_end
   implicit none
@@ -31,7 +32,9 @@ module demo_scene_reader
   character(len=*), parameter :: keys_contact = 'curve law penalty regularization_gap friction ' &
                                                 // 'tangential_penalty self_contact pairs tangent ' &
                                                 // 'search_margin threads max_handover_hops max_candidates ' &
-                                                // 'parallel_angle warm_start max_iterations'
+                                                // 'parallel_angle warm_start max_iterations contact_type ' &
+                                                // 'line_penalty line_tangential_penalty line_points line_angle ' &
+                                                // 'point_angle'
   character(len=*), parameter :: keys_check = 'kind beam_a beam_b tolerance min_rate min_contacts ' &
                                               // 'min_nodes_crossed reference'
 
@@ -276,7 +279,7 @@ contains
         call need_real('beam', b, 'p1', p1)
         call need_real('beam', b, 'p2', p2)
         if (.not. (norm2(p2 - p1) > 0.0_dp)) call bad('beam', b, 'p2', 'equals p1: a line needs two distinct points')
-        pts = line_points(p1, p2, n_el)
+        pts = straight_points(p1, p2, n_el)
         if (up(1) < -0.5_dp * huge(1.0_dp)) then
           ! default cross-section axis: global z, or y for a vertical line
           up = [0.0_dp, 0.0_dp, 1.0_dp]
@@ -657,14 +660,21 @@ contains
     ! the library's options, passed as they are (demo_contact_hook)
     real(dp) :: search_margin, parallel_angle
     integer :: threads, max_handover_hops, max_candidates, warm_start, max_iterations
+    ! line contact (b2b_pair.h "Line contact"): the element per pair of groups
+    character(len=16) :: contact_type
+    real(dp) :: line_penalty, line_tangential_penalty, line_angle, point_angle
+    integer :: line_points
     namelist /contact/ curve, law, penalty, regularization_gap, friction, tangential_penalty, self_contact, pairs, &
                        tangent, search_margin, threads, max_handover_hops, max_candidates, parallel_angle, &
-                       warm_start, max_iterations
+                       warm_start, max_iterations, contact_type, line_penalty, line_tangential_penalty, &
+                       line_points, line_angle, point_angle
     if (idx%count('contact') == 0) return
     curve = ''; law = 'linear'; penalty = unset; regularization_gap = 0.0_dp; friction = 0.0_dp
     tangential_penalty = 0.0_dp; self_contact = .false.; pairs = 0; tangent = 'exact'
     search_margin = 0.0_dp; parallel_angle = 0.0_dp; threads = 0; max_handover_hops = 0; max_candidates = 0
     warm_start = 0; max_iterations = 0
+    contact_type = 'point'; line_penalty = 0.0_dp; line_tangential_penalty = 0.0_dp; line_points = 0
+    line_angle = 0.0_dp; point_angle = 0.0_dp
     rewind (u)
     read (u, nml=contact, iostat=ios, iomsg=iomsg)
     if (ios /= 0) call read_failed('contact', 1, ios, iomsg)
@@ -715,6 +725,19 @@ contains
     call option('parallel_angle', option_params_real, parallel_angle)
     call option('warm_start', option_params_int, real(warm_start, dp))
     call option('max_iterations', option_params_int, real(max_iterations, dp))
+    contact_type = lower(contact_type)
+    if (.not. in_list(contact_type, 'point line all_angle')) call bad('contact', 1, 'contact_type', '''' &
+        // trim(contact_type) // ''' is not one of point, line, all_angle')
+    select case (contact_type)
+    case ('line'); call option('contact_type', option_params_int, real(B2B_CONTACT_TYPE_LINE, dp))
+    case ('all_angle'); call option('contact_type', option_params_int, real(B2B_CONTACT_TYPE_ALL_ANGLE, dp))
+    case default; call option('contact_type', option_params_int, real(B2B_CONTACT_TYPE_POINT, dp))
+    end select
+    call option('line_penalty', option_params_real, line_penalty)
+    call option('line_tangential_penalty', option_params_real, line_tangential_penalty)
+    call option('line_points', option_params_int, real(line_points, dp))
+    call option('line_angle', option_params_real, line_angle)
+    call option('point_angle', option_params_real, point_angle)
     call check_options(m)
   contains
     !> Records a library option the scene gives (and only then).
