@@ -10,7 +10,7 @@
  * are timed in the same run, interleaved, best of several trials, so that
  * the ratios are robust on a shared machine. --quick shortens part 2 (the
  * ctest smoke test); the accuracy numbers do not change.
- * Output is Markdown, ready for the README. */
+ * Output is Markdown, ready for doc/guide-curves.md. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -21,7 +21,7 @@
  *   - then the increment is committed.
  *
  *   drop_campaign [--quick] [--steps N] [--seed S]
- * --quick: 150 converged increments (ctest); default: 10^4 (README, "Drop
+ * --quick: 150 converged increments (ctest); default: 10^4 (doc/guide-model.md, "Drop
  * campaign"). Exit 0 only with zero silent penetrations. */
 #include <math.h>
 #include <stdint.h>

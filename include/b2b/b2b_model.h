@@ -518,7 +518,7 @@ B2B_EXPORT int b2b_model_stats(const b2b_model *model, int counts[16], double to
  * capacity < the count is B2B_ERR_SIZE (nothing written; the message gives
  * the count). B2B_ERR_STATE before an update (or after revert/restore),
  * B2B_ERR_NONFINITE / B2B_ERR_RANGE for a NaN, infinite or negative
- * tolerance. Costs well under an update (README, "Interpenetration audit").
+ * tolerance. Costs well under an update (doc/guide-model.md, "Interpenetration audit").
  */
 enum {
   B2B_AUDIT_OTHER = 0,
