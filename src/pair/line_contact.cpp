@@ -96,7 +96,9 @@ void line_sum(const Params& params, const SegmentRef& A, const SegmentRef& B, in
           add_outer(K, w.slope, pr.residual, ds);
         }
       }
-      if (w.slope != 0.0) symmetric = false;
+      // The weight's derivative makes the exact tangent unsymmetric; the
+      // main terms alone stay symmetric.
+      if (w.slope != 0.0 && !main_only) symmetric = false;
     }
   } else {
     std::memset(hist_new, 0, hl * sizeof(double));  // kept fresh
@@ -136,7 +138,7 @@ void line_sum(const Params& params, const SegmentRef& A, const SegmentRef& B, in
     if (fs == B2B_FRICTION_STICK) info[B2B_LINE_INFO_STICK_POINTS] += 1.0;
     if (fs == B2B_FRICTION_SLIP) info[B2B_LINE_INFO_SLIP_POINTS] += 1.0;
     if (pr.info[B2B_INFO_SYMMETRIC] != 1.0) symmetric = false;
-    if (w.slope != 0.0) symmetric = false;
+    if (w.slope != 0.0 && !main_only) symmetric = false;
 
     // R = w_i (J r + pi dJ/dX), dJ/dX = e . dx_A,xi/dX with e = t / J (A's columns).
     const double wi = ws[i], W = wi * J, pi = pr.info[B2B_INFO_ENERGY];
@@ -188,7 +190,12 @@ void line_sum(const Params& params, const SegmentRef& A, const SegmentRef& B, in
   info[B2B_LINE_INFO_SYMMETRIC] = symmetric ? 1.0 : 0.0;
   out.contact_status = tally.status();
   out.overflow = !all_finite(info, kLineInfoLength) || !all_finite(out.residual, kNdof) ||
-                 !all_finite(hist_new, (n + 1) * hl) || (K && !all_finite(K, kNN));
+                 !all_finite(hist_new, (n + 1) * hl) || (K && !all_finite(K, kNN)) ||
+                 (point_info && !all_finite(point_info, kInfoLength * n));
+  // Symmetric in exact arithmetic (no friction, no weight derivative): the
+  // rank-one terms r dJ^T and dJ r_N^T were added in different orders, so
+  // make it symmetric to the bit, as the flag promises.
+  if (K && symmetric) symmetrize(K);
 }
 
 }  // namespace
