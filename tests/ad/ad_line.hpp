@@ -150,10 +150,13 @@ int evaluate_line(const Settings& pst, const Settings& lst, const LineSettings& 
       any_owned = true;
       li[B2B_LINE_INFO_MIN_GAP] = std::fmin(li[B2B_LINE_INFO_MIN_GAP], q.info[B2B_INFO_GAP]);
     }
+    // lambda_P weights the point element's force: it is reported where there
+    // is one (the header's "lambda_P of the point element"; with no force
+    // nothing is weighted and the entry stays 0)
     bool inside = false;
-    const S lam = q.tangents ? blend_weight(ls, q.ta, q.tb, &inside) : S(0.0);
-    li[B2B_LINE_INFO_POINT_WEIGHT] = val(lam);
+    const S lam = q.active ? blend_weight(ls, q.ta, q.tb, &inside) : S(0.0);
     if (q.active && val(lam) > 0.0) {
+      li[B2B_LINE_INFO_POINT_WEIGHT] = val(lam);
       any_force = true;
       for (int r = 0; r < kNdof; ++r) out.R[r] += lam * q.R[r];
       const double lv = val(lam);
