@@ -510,6 +510,51 @@ START_TEST(known_bug_main_flag) {
 }
 END_TEST
 
+/* LIBRARY BUG (fails until fixed): the frictionless line element (LINE,
+ * tangent EXACT, outside any blend) reports line_info[SYMMETRIC] = 1 for a
+ * tangent that is symmetric only to rounding: src/pair/line_contact.cpp
+ * (line_sum) adds the length element's terms as s r_i gJ^T (with the
+ * point's residual r_i) and s gJ rN^T (with rN = -f P^T n recomputed), two
+ * loops that round differently, so K[r][c] and K[c][r] differ in the last
+ * bits. b2b_pair_eval's flag means symmetric bit for bit (fuzz_pair_eval
+ * asserts it, and check_fuzz_regressions holds the MAIN case that broke
+ * it); a host that reads one triangle because of the flag gets a matrix
+ * that differs from the returned one. Found by fuzz_pair_line. */
+static int bit_symmetric(const double *K) {
+  for (int c = 0; c < 24; ++c)
+    for (int r = c + 1; r < 24; ++r)
+      if (memcmp(&K[r + 24 * c], &K[c + 24 * r], sizeof(double)) != 0) return 0;
+  return 1;
+}
+
+START_TEST(known_bug_symmetric_to_rounding) {
+  b2b_params *p = line_params(B2B_LAW_LINEAR, B2B_CONTACT_TYPE_LINE, 0, B2B_TANGENT_EXACT);
+  tst_rng rng;
+  tst_rng_seed(&rng, 31005);
+  int flagged = 0, exact = 0;
+  double worst = 0.0;
+  for (int c = 0; c < B2B_CURVE_KIND_COUNT * B2B_CURVE_KIND_COUNT; ++c) {
+    tst_pair_spec s;
+    double X[24];
+    configuration(&rng, B2B_CONTACT_TYPE_LINE, TST_KIND_A(c), TST_KIND_B(c), 0, &s, X);
+    static out_t l;
+    lib_line(p, &s, X, 6, NULL, &l);
+    if (l.status != B2B_CONTACT_ACTIVE || l.li[B2B_LINE_INFO_SYMMETRIC] != 1.0) continue;
+    ++flagged;
+    exact += bit_symmetric(l.K);
+    worst = fmax(worst, tst_asymmetry(l.K));
+  }
+  printf("LINE, frictionless, flagged symmetric: %d of %d tangents symmetric bit for bit "
+         "(largest asymmetry %.2e relative)\n", exact, flagged, worst);
+  ck_assert_int_ge(flagged, 8);
+  ck_assert_msg(exact == flagged,
+                "LIBRARY BUG: line_info[SYMMETRIC] = 1 but only %d of %d tangents are "
+                "symmetric bit for bit (asymmetry up to %.2e)",
+                exact, flagged, worst);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("pair_line_ad");
   TCase *tc = tcase_create("line_ad");
@@ -520,6 +565,7 @@ int main(void) {
   suite_add_tcase(s, tc);
   TCase *bugs = tcase_create("known_library_bugs");
   tcase_add_test(bugs, known_bug_main_flag);
+  tcase_add_test(bugs, known_bug_symmetric_to_rounding);
   suite_add_tcase(s, bugs);
   return tst_run_suite(s);
 }
