@@ -636,6 +636,39 @@ START_TEST(known_bug_point_info_overflow) {
 }
 END_TEST
 
+/* LIBRARY BUG (fails until fixed; found by fuzz_pair_line): with the
+ * tangent option FD, a pair that carries no force (status OPEN: the beams
+ * touch within 1e-9) returns a non-zero tangent, the differences of
+ * residuals at perturbed configurations that do penetrate.
+ * b2b_pair.h: "Where the pair carries no force both are zero" (and
+ * b2b_pair_eval's FD tangent is zero there). src/pair/line_contact.cpp,
+ * evaluate_line: the FD branch fills K whatever out.contact_status is. */
+START_TEST(known_bug_fd_tangent_not_active) {
+  b2b_params *p = NULL;
+  char msg[B2B_ERRMSG_LEN];
+  ck_assert(b2b_params_create(&p, msg, sizeof msg) == B2B_OK);
+  b2b_params_set_real(p, "penalty", EPS_N, msg, sizeof msg);
+  b2b_params_set_int(p, "contact_type", B2B_CONTACT_TYPE_LINE, msg, sizeof msg);
+  b2b_params_set_real(p, "line_penalty", EPS_L, msg, sizeof msg);
+  b2b_params_set_int(p, "tangent", B2B_TANGENT_FD, msg, sizeof msg);
+  ck_assert(b2b_params_finalize(p, msg, sizeof msg) == B2B_OK);
+  const double radii[2] = {RADIUS, RADIUS};
+  double X[24];
+  static res_t r;
+  straight(1.2, 2 * RADIUS + 1e-9, 0.0, 1.0, 0.0, X);
+  r.rc = b2b_pair_eval_line(p, kLinearSeg, X, NULL, radii, 4, kFresh, r.hist,
+                            5 * tst_history_len(p), &r.status, r.li, r.pinfo, r.R, r.K, 24, r.msg,
+                            sizeof r.msg);
+  ck_assert_int_eq(r.rc, B2B_OK);
+  ck_assert_int_eq(r.status, B2B_CONTACT_OPEN);
+  ck_assert_msg(all_zero(r.R, 24), "OPEN with a residual");
+  double m = 0.0;
+  for (int k = 0; k < 576; ++k) m = fmax(m, fabs(r.K[k]));
+  ck_assert_msg(m == 0.0, "LIBRARY BUG: status OPEN, tangent option FD: max |K| = %g", m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("pair_line_extremes");
   TCase *tc = tcase_create("extremes");
@@ -651,6 +684,7 @@ int main(void) {
   suite_add_tcase(s, tc);
   TCase *bugs = tcase_create("known_library_bugs");
   tcase_add_test(bugs, known_bug_point_info_overflow);
+  tcase_add_test(bugs, known_bug_fd_tangent_not_active);
   suite_add_tcase(s, bugs);
   return tst_run_suite(s);
 }

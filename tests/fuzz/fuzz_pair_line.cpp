@@ -122,14 +122,17 @@ struct Result {
   char message[B2B_ERRMSG_LEN];
 };
 
-bool nearly_symmetric(const double* K, int ld) {
+// max |K - K^T| over max |K|, differences below 1e-290 (subnormal entries,
+// from a subnormal penalty: regress-symmetric-subnormal) not counted.
+double asymmetry(const double* K, int ld) {
   double m = 0.0, d = 0.0;
   for (int c = 0; c < 24; ++c)
     for (int r = 0; r < 24; ++r) {
       m = std::fmax(m, std::fabs(K[r + ld * c]));
-      d = std::fmax(d, std::fabs(K[r + ld * c] - K[c + ld * r]));
+      const double e = std::fabs(K[r + ld * c] - K[c + ld * r]);
+      if (e > 1e-290) d = std::fmax(d, e);
     }
-  return d <= 1e-12 * m;
+  return m > 0.0 ? d / m : d;
 }
 
 void run(const Pair& p, const double X[24], int n, const double* hist_old, int hist_len,
@@ -155,6 +158,18 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
                  lay.ldk, lay.want_point_info ? "yes" : "NULL",
                  lay.alias ? "is hist_old" : "separate");
     print_params(p.lp.params);
+    {  // the line options print_params does not know
+      double lp = 0, lt = 0, la = 0, pa = 0;
+      int ct = 0, np = 0;
+      b2b_params_get_int(p.lp.params, "contact_type", &ct, nullptr, 0);
+      b2b_params_get_int(p.lp.params, "line_points", &np, nullptr, 0);
+      b2b_params_get_real(p.lp.params, "line_penalty", &lp, nullptr, 0);
+      b2b_params_get_real(p.lp.params, "line_tangential_penalty", &lt, nullptr, 0);
+      b2b_params_get_real(p.lp.params, "line_angle", &la, nullptr, 0);
+      b2b_params_get_real(p.lp.params, "point_angle", &pa, nullptr, 0);
+      std::fprintf(stderr, "  line: contact_type %d, line_penalty %a, line_tangential_penalty "
+                   "%a, line_angle %a, point_angle %a, line_points %d\n", ct, lp, lt, la, pa, np);
+    }
     print_ints("segments", p.segments, 6);
     print_doubles("X", X, 24);
     if (p.tangents) print_doubles("end_tangents", p.tangents, 12);
@@ -205,9 +220,16 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
   FUZZ_REQUIRE(same_bits(r.hist_new + hist_len, untouched.hist_new + hist_len,
                          sizeof(double) * (kHistCap - hist_len)),
                "hist_new written beyond hist_len %d", hist_len);
-  if (lay.want_point_info) {
+  // LIBRARY BUG (check_pair_line_extremes known_bug_point_info_overflow;
+  // reproducer corpus/fuzz_pair_line/regress-point-info-overflow): with
+  // ALL_ANGLE, points of weight 0 may report an overflowed (inf) force or
+  // energy with B2B_OK; until fixed, point_info's finiteness is asserted
+  // for the other contact types only. Fixed: drop the condition.
+  if (lay.want_point_info && p.lp.type != B2B_CONTACT_TYPE_ALL_ANGLE) {
     FUZZ_REQUIRE(all_finite(r.point_info, B2B_PAIR_INFO_LEN * n),
                  "point_info not finite (status %d, contact type %d)", r.status, p.lp.type);
+  }
+  if (lay.want_point_info) {
     FUZZ_REQUIRE(same_bits(r.point_info + 32 * n, untouched.point_info + 32 * n,
                            sizeof(double) * 32 * (kMaxP - n)),
                  "point_info written beyond n %d", n);
@@ -260,9 +282,11 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
   // until it is fixed this asserts symmetry to 1e-12 of the largest entry
   // and the campaign can go on. Fixed: put exactly_symmetric back.
   if (sym == 1.0 && lay.want_tangent)
-    FUZZ_REQUIRE(nearly_symmetric(r.tangent, ldk),
-                 "line_info says symmetric, the tangent is not (status %d, type %d, friction "
-                 "%g, option %d)", r.status, p.lp.type, p.lp.friction, p.lp.tangent);
+    FUZZ_REQUIRE(asymmetry(r.tangent, ldk) <= 1e-12,
+                 "line_info says symmetric, the tangent is not (asymmetry %.2e of the largest "
+                 "entry; status %d, type %d, friction %g, option %d, min gap %g)",
+                 asymmetry(r.tangent, ldk), r.status, p.lp.type, p.lp.friction, p.lp.tangent,
+                 li[B2B_LINE_INFO_MIN_GAP]);
   if (r.status == B2B_CONTACT_ACTIVE)
     FUZZ_REQUIRE(act > 0 || li[B2B_LINE_INFO_POINT_WEIGHT] > 0,
                  "ACTIVE without a part carrying force");
@@ -270,10 +294,17 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
     for (int i = 0; i < 24; ++i)
       FUZZ_REQUIRE(r.residual[i] == 0.0, "status %d with residual[%d] = %g", r.status, i,
                    r.residual[i]);
-    if (lay.want_tangent)
+    // LIBRARY BUG (check_pair_line_extremes known_bug_fd_tangent_not_active;
+    // reproducer corpus/fuzz_pair_line/regress-fd-tangent-open): the FD
+    // tangent of a pair that carries no force is not zeroed (the perturbed
+    // configurations touch). Until fixed, not asserted for FD.
+    if (lay.want_tangent && p.lp.tangent != B2B_TANGENT_FD)
       for (int c = 0; c < 24; ++c)
         for (int i = 0; i < 24; ++i)
-          FUZZ_REQUIRE(r.tangent[i + ldk * c] == 0.0, "status %d with a tangent entry", r.status);
+          FUZZ_REQUIRE(r.tangent[i + ldk * c] == 0.0,
+                       "status %d with tangent[%d][%d] = %g (line_info: active %g, weight %g, "
+                       "point status %g, force %g)", r.status, i, c, r.tangent[i + ldk * c],
+                       act, lam, ps, li[B2B_LINE_INFO_NORMAL_FORCE]);
     FUZZ_REQUIRE(act == 0, "status %d with %g active points", r.status, act);
   }
   if (lay.want_point_info)
@@ -281,15 +312,20 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
       const double* q = r.point_info + 32 * i;
       for (int k = B2B_INFO_LINE_POINTS; k < B2B_PAIR_INFO_LEN; ++k)
         FUZZ_REQUIRE(q[k] == 0.0, "point %d: info[%d] = %g", i, k, q[k]);
-      FUZZ_REQUIRE(q[B2B_INFO_NORMAL_FORCE] >= 0 && q[B2B_INFO_DISSIPATION] >= 0,
+      FUZZ_REQUIRE(!(q[B2B_INFO_NORMAL_FORCE] < 0) && !(q[B2B_INFO_DISSIPATION] < 0),
                    "point %d: force %g, dissipation %g", i, q[B2B_INFO_NORMAL_FORCE],
                    q[B2B_INFO_DISSIPATION]);
       FUZZ_REQUIRE(q[B2B_INFO_ANGLE] >= 0 && q[B2B_INFO_ANGLE] <= 90, "point %d: angle %g", i,
                    q[B2B_INFO_ANGLE]);
       const double* T = q + B2B_INFO_TANGENTIAL_FORCE;
       const double tm = std::hypot(T[0], std::hypot(T[1], T[2]));
-      FUZZ_REQUIRE(tm <= p.lp.friction * q[B2B_INFO_NORMAL_FORCE] * (1 + 1e-12) + 1e-300,
-                   "point %d: |T| %.17g beyond mu f_N", i, tm);
+      // (mu f_N is computed only with friction: 0 times an overflowed f_N of
+      // the ALL_ANGLE bug above would be NaN)
+      FUZZ_REQUIRE(p.lp.friction > 0.0
+                       ? tm <= p.lp.friction * q[B2B_INFO_NORMAL_FORCE] * (1 + 1e-12) + 1e-300
+                       : tm == 0.0,
+                   "point %d: |T| %.17g beyond mu f_N (mu %g, f_N %g)", i, tm, p.lp.friction,
+                   q[B2B_INFO_NORMAL_FORCE]);
     }
 }
 
