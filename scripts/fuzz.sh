@@ -48,7 +48,7 @@ if ((${#missing[@]})); then
 fi
 
 all_targets=(fuzz_segment_eval fuzz_pair_eval fuzz_handover fuzz_model_update fuzz_model_restore
-  fuzz_model_calls)
+  fuzz_model_calls fuzz_pair_line)
 read -r -a targets <<<"${FUZZ_TARGETS:-${all_targets[*]}}"
 jobs=$(nproc)
 # OpenMP off: the model's threads would only make runs less reproducible (a

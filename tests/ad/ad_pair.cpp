@@ -9,6 +9,7 @@
 #include <cstring>
 #include <exception>
 
+#include "ad_line.hpp"
 #include "ad_pair.hpp"
 
 namespace {
@@ -181,9 +182,159 @@ int eval(const b2b_params* params, const int* segments, const double* X,
                          value_mismatch, at, held, errmsg, errmsg_len);
 }
 
+// ------------------------------------------------------------- line contact
+
+int read_line_settings(const b2b_params* p, const b2bad::Settings& st, b2bad::Settings& lst,
+                       b2bad::LineSettings& ls, char* errmsg, int errmsg_len) {
+  double la = 0.0, pa = 0.0;
+  const int ok =
+      b2b_params_get_int(p, "contact_type", &ls.type, nullptr, 0) == B2B_OK &&
+      b2b_params_get_real(p, "line_penalty", &ls.line_penalty, nullptr, 0) == B2B_OK &&
+      b2b_params_get_real(p, "line_tangential_penalty", &ls.line_eps_t, nullptr, 0) ==
+          B2B_OK &&
+      b2b_params_get_real(p, "line_angle", &la, nullptr, 0) == B2B_OK &&
+      b2b_params_get_real(p, "point_angle", &pa, nullptr, 0) == B2B_OK;
+  if (!ok) return fail(errmsg, errmsg_len, B2B_ERR_STATE, "cannot read the line options");
+  const double deg = 3.14159265358979323846 / 180.0;
+  ls.s1 = std::sin(la * deg) * std::sin(la * deg);
+  ls.s2 = std::sin(pa * deg) * std::sin(pa * deg);
+  lst = st;
+  lst.penalty = ls.line_penalty;
+  lst.eps_t = ls.line_eps_t;
+  return B2B_OK;
+}
+
+template <class R>
+int eval_line_in(const b2bad::Settings& st, const b2bad::Settings& lst,
+                 const b2bad::LineSettings& ls, const b2bad::SegmentSpec* spec, const double* X,
+                 const double* radii, int n, const double* hist_old, double* hist_new,
+                 int hist_len, int flags, int* contact_status, double* line_info,
+                 double* point_info, double* residual, double* tangent, int ldk,
+                 double* energy_gradient, double* value_mismatch, char* errmsg,
+                 int errmsg_len) {
+  using DR = b2bad::Dual<kNdof, R>;
+  static thread_local b2bad::LineResult<R> rd;  // large: kept off the stack
+  static thread_local b2bad::LineResult<DR> rr;
+  if (int e = b2bad::evaluate_line(st, lst, ls, spec, X, radii, n, hist_old, flags, rd))
+    return fail(errmsg, errmsg_len, e, "a patch has a zero element length or direction");
+  const bool need_dual = (tangent && rd.active && st.tangent != B2B_TANGENT_MAIN) ||
+                         energy_gradient || value_mismatch;
+  if (need_dual)
+    if (int e = b2bad::evaluate_line(st, lst, ls, spec, X, radii, n, hist_old, flags, rr))
+      return fail(errmsg, errmsg_len, e, "a patch has a zero element length or direction");
+  *contact_status = rd.status;
+  std::memcpy(line_info, rd.line_info, sizeof rd.line_info);
+  if (point_info)
+    std::memcpy(point_info, rd.point_info, sizeof(double) * B2B_PAIR_INFO_LEN * n);
+  std::memcpy(hist_new, rd.hist, hist_len * sizeof(double));
+  for (int r = 0; r < kNdof; ++r) residual[r] = static_cast<double>(rd.R[r]);
+  if (energy_gradient)
+    for (int a = 0; a < kNdof; ++a)
+      energy_gradient[a] = static_cast<double>(rr.potential.d[a] / rr.scale);
+  if (value_mismatch) {
+    double m = 0.0;
+    for (int r = 0; r < kNdof; ++r)
+      m = std::fmax(m, static_cast<double>(std::fabs(rr.R[r].v - rd.R[r])));
+    if (rr.status != rd.status) m = INFINITY;
+    *value_mismatch = m;
+  }
+  if (!tangent) return B2B_OK;
+  for (int c = 0; c < kNdof; ++c)
+    for (int r = 0; r < kNdof; ++r) tangent[r + static_cast<size_t>(ldk) * c] = 0.0;
+  if (!rd.active) return B2B_OK;
+  if (st.tangent == B2B_TANGENT_MAIN) {
+    for (int c = 0; c < kNdof; ++c)
+      for (int r = 0; r < kNdof; ++r)
+        tangent[r + static_cast<size_t>(ldk) * c] = rd.K_main[r + kNdof * c];
+    line_info[B2B_LINE_INFO_SYMMETRIC] = 1.0;
+    return B2B_OK;
+  }
+  for (int c = 0; c < kNdof; ++c)
+    for (int r = 0; r < kNdof; ++r)
+      tangent[r + static_cast<size_t>(ldk) * c] = static_cast<double>(rr.R[r].d[c] / rr.scale);
+  if (st.tangent == B2B_TANGENT_SYMMETRIC && line_info[B2B_LINE_INFO_SYMMETRIC] == 0.0) {
+    for (int c = 0; c < kNdof; ++c)
+      for (int r = 0; r < c; ++r) {
+        double& u = tangent[r + static_cast<size_t>(ldk) * c];
+        double& l = tangent[c + static_cast<size_t>(ldk) * r];
+        u = l = 0.5 * (u + l);
+      }
+    line_info[B2B_LINE_INFO_SYMMETRIC] = 1.0;
+  }
+  if (st.tangent == B2B_TANGENT_FD) line_info[B2B_LINE_INFO_SYMMETRIC] = 0.0;
+  return B2B_OK;
+}
+
+int eval_line(const b2b_params* params, const int* segments, const double* X,
+              const double* end_tangents, const double* radii, int n, const double* hist_old,
+              double* hist_new, int hist_len, int flags, int* contact_status,
+              double* line_info, double* point_info, double* residual, double* tangent,
+              int ldk, double* energy_gradient, double* value_mismatch, char* errmsg,
+              int errmsg_len) {
+  if (!params || !segments || !X || !radii || !hist_old || !hist_new || !contact_status ||
+      !line_info || !residual)
+    return fail(errmsg, errmsg_len, B2B_ERR_NULL, "a required argument is NULL");
+  b2bad::Settings st, lst;
+  b2bad::LineSettings ls;
+  if (int e = read_settings(params, st, errmsg, errmsg_len)) return e;
+  if (int e = read_line_settings(params, st, lst, ls, errmsg, errmsg_len)) return e;
+  if (n < 1 || n > b2bad::kLinePointsMax)
+    return fail(errmsg, errmsg_len, B2B_ERR_RANGE, "n_points is %d, 1 .. %d allowed", n,
+                b2bad::kLinePointsMax);
+  if (hist_len != (n + 1) * st.hist_len)
+    return fail(errmsg, errmsg_len, B2B_ERR_SIZE, "hist_len is %d, the parameter set needs %d",
+                hist_len, (n + 1) * st.hist_len);
+  if (tangent && ldk < kNdof)
+    return fail(errmsg, errmsg_len, B2B_ERR_SIZE, "ldk is %d, at least 24 needed", ldk);
+  for (int i = 0; i < hist_len; ++i)
+    if (!std::isfinite(hist_old[i]))
+      return fail(errmsg, errmsg_len, B2B_ERR_NONFINITE, "hist_old[%d] is not finite", i);
+  b2bad::SegmentSpec spec[2];
+  if (int e = check_and_spec(segments, X, end_tangents, radii, spec, errmsg, errmsg_len))
+    return e;
+  if (flags & b2bad::kLongDouble)
+    return eval_line_in<long double>(st, lst, ls, spec, X, radii, n, hist_old, hist_new,
+                                     hist_len, flags, contact_status, line_info, point_info,
+                                     residual, tangent, ldk, energy_gradient, value_mismatch,
+                                     errmsg, errmsg_len);
+  return eval_line_in<double>(st, lst, ls, spec, X, radii, n, hist_old, hist_new, hist_len,
+                              flags, contact_status, line_info, point_info, residual, tangent,
+                              ldk, energy_gradient, value_mismatch, errmsg, errmsg_len);
+}
+
 }  // namespace
 
 extern "C" {
+
+int b2b_ad_pair_eval_line_ex(const b2b_params* params, const int segments[6],
+                             const double X[24], const double end_tangents[12],
+                             const double radii[2], int n_points, const double* hist_old,
+                             double* hist_new, int hist_len, int flags, int* contact_status,
+                             double line_info[16], double* point_info, double residual[24],
+                             double* tangent, int ldk, double energy_gradient[24],
+                             double* value_mismatch, char* errmsg, int errmsg_len) {
+  try {
+    return eval_line(params, segments, X, end_tangents, radii, n_points, hist_old, hist_new,
+                     hist_len, flags, contact_status, line_info, point_info, residual, tangent,
+                     ldk, energy_gradient, value_mismatch, errmsg, errmsg_len);
+  } catch (const std::exception& e) {
+    return fail(errmsg, errmsg_len, B2B_ERR_INTERNAL, "exception: %s", e.what());
+  } catch (...) {
+    return fail(errmsg, errmsg_len, B2B_ERR_INTERNAL, "unknown exception");
+  }
+}
+
+int b2b_ad_pair_eval_line(const b2b_params* params, const int segments[6], const double X[24],
+                          const double end_tangents[12], const double radii[2], int n_points,
+                          const double* hist_old, double* hist_new, int hist_len,
+                          int* contact_status, double line_info[16], double* point_info,
+                          double residual[24], double* tangent, int ldk, char* errmsg,
+                          int errmsg_len) {
+  return b2b_ad_pair_eval_line_ex(params, segments, X, end_tangents, radii, n_points, hist_old,
+                                  hist_new, hist_len, 0, contact_status, line_info, point_info,
+                                  residual, tangent, ldk, nullptr, nullptr, errmsg, errmsg_len);
+}
+
 
 int b2b_ad_pair_eval_ex(const b2b_params* params, const int segments[6], const double X[24],
                         const double end_tangents[12], const double radii[2],

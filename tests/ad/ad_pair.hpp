@@ -326,10 +326,13 @@ void point(const Segment<S>& g, const T& t, S* x, S* xd, S* xdd) {
 // a linear term adds H_k coef_s w to slot s; a tangent T = sigma L uhat adds
 // sigma (w.uhat) dL/dX + F^T c with c = (sigma L / r)(I - uhat uhat^T) w and
 // F = du/dX (chord: -I on a, +I on c; weighted: (3.1) differentiated).
+// order 1: the same for P_,t = d(x_,t)/dX (the Hermite basis' derivative in
+// place of the basis: the terms enter x_,t exactly as they enter x).
 template <class S, class T>
-void add_PTw(const Segment<S>& g, const T& t, const S* w, double sign, S* out) {
-  T h[4], hd[4], hdd[4];
-  hermite(t, h, hd, hdd);
+void add_PTw(const Segment<S>& g, const T& t, const S* w, double sign, S* out, int order = 0) {
+  T hb[4], hd[4], hdd[4];
+  hermite(t, hb, hd, hdd);
+  const T* h = order == 1 ? hd : hb;
   for (int k = 0; k < 4; ++k) {
     const TermSpec& ts = g.spec->term[k];
     S wk[3];
@@ -550,6 +553,22 @@ struct Result {
   double slope = 0.0;    // df_N/dg
   double scale = 1.0;    // s: X' = (X - c)/s
   bool active = false, friction = false, intersecting = false;
+  // For the line element (Hold::line) and the all-angle blend:
+  S ta[3], tb[3];        // x_A,xi and x_B,eta at the final parameters (local units)
+  bool tangents = false; // ta, tb are set (the closest points converged)
+  S f = 0.0;             // the normal force f_N
+  S J = 0.0;             // Hold::line: J = |x_A,xi(xi_i)| (original units)
+  S dJ[12];              // Hold::line: dJ/dX on A's 12 coordinates
+};
+
+// Which parameters are held, and where (b2b_pair_eval_ends: at -1 or +1;
+// the line element's integration points: A's at any xi_i). line: an
+// integration point of b2b_pair_eval_line, whose info reports no end
+// (END_A = 0), whose search starts from the projection onto B's chord
+// (doc/line-contact.md 2) and which also returns J and dJ/dX.
+struct Hold {
+  bool a = false, b = false, line = false;
+  double ta = 0.0, tb = 0.0;
 };
 
 // flags of evaluate (and b2b_ad_pair_eval_ex)
@@ -562,12 +581,13 @@ enum { kFreezeClosestPoints = 1, kLongDouble = 2 };
 template <class S>
 int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const double* radii,
              const double* hist_old, int flags, const double* at, Result<S>& out,
-             const int* held = nullptr) {
-  // An end contact (held: A's and B's parameter held at -1 or +1, 0 free):
+             const Hold& hold) {
+  // An end contact or a line point (hold: A's and/or B's parameter held):
   // the held parameters are constants of the problem, in the search, in the
   // scalar Newton steps (so their derivatives are zero) and in the force.
-  const int ha = held ? held[0] : 0, hb = held ? held[1] : 0;
-  const bool any_held = ha != 0 || hb != 0;
+  const bool ha = hold.a, hb = hold.b;
+  const double ta = hold.ta, tb = hold.tb;
+  const bool any_held = ha || hb;
   out = Result<S>();
   std::memcpy(out.hist, hist_old, st.hist_len * sizeof(double));
   for (int i = 8; i < st.hist_len; ++i) out.hist[i] = 0.0;  // forgotten unless active
@@ -630,6 +650,19 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
   if (int e = build(spec[1], Xl + 12, gB)) return e;
   if (int e = build(spec[0], Xs, sA)) return e;
   if (int e = build(spec[1], Xs + 12, sB)) return e;
+  if (hold.line) {
+    // the length element of the integration point, J = |x_A,xi(xi_i)| in
+    // original units, and dJ/dX = P_A,xi^T e (e = x_A,xi / |x_A,xi|), in the
+    // scalar type: its derivative, the length element's second variation,
+    // comes from AD
+    S xa[3], a[3], e[3];
+    point(sA, ta, xa, a, (S*)nullptr);
+    const S na = norm3(a);
+    out.J = s * na;
+    for (int i = 0; i < 3; ++i) e[i] = a[i] / na;
+    for (int r = 0; r < 12; ++r) out.dJ[r] = 0.0;
+    add_PTw(sA, ta, e, 1.0, out.dJ, 1);
+  }
 
   // Closest points: safeguarded Newton in double to the library's criterion.
   const bool has_history = hist_old[kTag] == 1.0;
@@ -641,25 +674,38 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
   } else {
     chord_start(gA, gB, &xi0, &eta0);
   }
-  if (ha) xi0 = ha;
-  if (hb) eta0 = hb;
+  if (ha) xi0 = ta;
+  if (hb) eta0 = tb;
+  if (hold.line && ha && !hb && !(st.warm_start && has_history)) {
+    // doc/line-contact.md 2: from the projection of x_A(xi_i) onto B's
+    // chord, clamped to the segment (the chords' closest points are
+    // undefined for parallel chords)
+    double xa[3], ch[3], dd[3];
+    point(gA, ta, xa, (double*)nullptr, (double*)nullptr);
+    for (int i = 0; i < 3; ++i) {
+      ch[i] = gB.value[2][i] - gB.value[0][i];
+      dd[i] = xa[i] - 0.5 * (gB.value[0][i] + gB.value[2][i]);
+    }
+    const double cc = dot3(ch, ch);
+    eta0 = cc > 0.0 ? clampd(2.0 * dot3(dd, ch) / cc, -1.0, 1.0) : 0.0;
+  }
   Closest cp;
   if (at) {  // given closest points (a diagnostic): no search
     cp.converged = true;
-    cp.xi = ha ? ha : at[0];
-    cp.eta = hb ? hb : at[1];
+    cp.xi = ha ? ta : at[0];
+    cp.eta = hb ? tb : at[1];
   } else if (ha && hb) {  // node to node: nothing to search
     cp.converged = true;
-    cp.xi = ha;
-    cp.eta = hb;
+    cp.xi = ta;
+    cp.eta = tb;
   } else if (any_held) {
-    cp = newton_held(gA, gB, xi0, eta0, ha != 0, st.max_iterations, tol_local);
+    cp = newton_held(gA, gB, xi0, eta0, ha, st.max_iterations, tol_local);
   } else {
     cp = newton(gA, gB, xi0, eta0, st.max_iterations, tol_local);
   }
   double* info = out.info;
-  info[B2B_INFO_END_A] = ha;
-  info[B2B_INFO_END_B] = hb;
+  info[B2B_INFO_END_A] = hold.line ? 0.0 : (ha ? ta : 0.0);
+  info[B2B_INFO_END_B] = hold.line ? 0.0 : (hb ? tb : 0.0);
   info[B2B_INFO_XI] = cp.xi;
   info[B2B_INFO_ETA] = cp.eta;
   info[B2B_INFO_ITERATIONS] = cp.iterations;
@@ -761,6 +807,11 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
   point(sA, xi, xa, a, (S*)nullptr);
   point(sB, eta, xb, b, (S*)nullptr);
   for (int i = 0; i < 3; ++i) d[i] = xa[i] - xb[i];
+  for (int i = 0; i < 3; ++i) {
+    out.ta[i] = a[i];
+    out.tb[i] = b[i];
+  }
+  out.tangents = true;
   info[B2B_INFO_XI] = val(xi);
   info[B2B_INFO_ETA] = val(eta);
   {
@@ -846,6 +897,7 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
       }
     }
   }
+  out.f = f;
   info[B2B_INFO_NORMAL_FORCE] = val(f);
   info[B2B_INFO_ENERGY] = val(out.energy);
   if (!(val(f) > 0.0)) {
@@ -941,6 +993,20 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
     add_PTw(gB, dval(eta), nv, -1.0, out.G + 12);
   }
   return B2B_OK;
+}
+
+// The end contact's form: held[2] = A's and B's parameter held at -1 or +1,
+// 0 free (NULL: none held).
+template <class S>
+int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const double* radii,
+             const double* hist_old, int flags, const double* at, Result<S>& out,
+             const int* held = nullptr) {
+  Hold h;
+  if (held) {
+    h.a = held[0] != 0, h.b = held[1] != 0;
+    h.ta = held[0], h.tb = held[1];
+  }
+  return evaluate(st, spec, X, radii, hist_old, flags, at, out, h);
 }
 
 }  // namespace b2bad

@@ -84,6 +84,45 @@ int b2b_ad_pair_eval_ends(const b2b_params *params, const int segments[6], const
                           double residual[24], double *tangent, int ldk,
                           double energy_gradient[24], char *errmsg, int errmsg_len);
 
+/* The line-contact element of b2b_pair_eval_line (b2b_pair.h, "Line
+ * contact"; doc/line-contact.md): the same arguments and outputs (status,
+ * line_info, point_info (may be NULL), new histories, residual, tangent of
+ * the "tangent" option), point_info's iteration counts its own.
+ * tests/ad/ad_line.hpp says what it computes: n Gauss-Legendre points of
+ * its own, each the point element above with A's parameter held at xi_i
+ * (the line penalties, its own history), weighted by w_i |x_A,xi(xi_i)|
+ * with that length element in the scalar type; with contact_type
+ * ALL_ANGLE the blend with the point element (slot 0 of the histories),
+ * its weights in the scalar type. The tangent is the AD derivative of the
+ * residual as written (EXACT; SYMMETRIC its symmetric part; MAIN the
+ * weighted main terms; FD the AD tangent, flagged non-symmetric).
+ * The pair's status, which b2b_pair.h does not spell out: ACTIVE if a part
+ * carries force, else OPEN if a part is owned (open or active), else the
+ * line points' common status, OUTSIDE where they differ.
+ * Bad input as b2b_ad_pair_eval, and B2B_ERR_RANGE for n_points outside
+ * 1 .. B2B_LINE_POINTS_MAX, B2B_ERR_SIZE for hist_len other than
+ * (n_points + 1) times the history size. */
+int b2b_ad_pair_eval_line(const b2b_params *params, const int segments[6], const double X[24],
+                          const double end_tangents[12], const double radii[2], int n_points,
+                          const double *hist_old, double *hist_new, int hist_len,
+                          int *contact_status, double line_info[16], double *point_info,
+                          double residual[24], double *tangent, int ldk, char *errmsg,
+                          int errmsg_len);
+
+/* b2b_ad_pair_eval_line with flags (B2B_AD_LONG_DOUBLE; FREEZE holds every
+ * projection, and the point element's closest points, in the derivative)
+ * and two more outputs (each may be NULL): energy_gradient[24], the AD
+ * gradient of the line part's potential sum_i w_i J_i pi(g_i) (without
+ * friction and the blend it must equal the residual); value_mismatch, as
+ * for b2b_ad_pair_eval_ex. */
+int b2b_ad_pair_eval_line_ex(const b2b_params *params, const int segments[6],
+                             const double X[24], const double end_tangents[12],
+                             const double radii[2], int n_points, const double *hist_old,
+                             double *hist_new, int hist_len, int flags, int *contact_status,
+                             double line_info[16], double *point_info, double residual[24],
+                             double *tangent, int ldk, double energy_gradient[24],
+                             double *value_mismatch, char *errmsg, int errmsg_len);
+
 /* The curve kinds the reference implements: kinds 0 .. count-1. */
 int b2b_ad_curve_kind_count(void);
 

@@ -14,7 +14,8 @@ Run from the repository root:  python3 tests/fuzz/make_seeds.py
 import os
 import random
 
-TARGETS = ["fuzz_segment_eval", "fuzz_pair_eval", "fuzz_handover", "fuzz_model_update"]
+TARGETS = ["fuzz_segment_eval", "fuzz_pair_eval", "fuzz_handover", "fuzz_model_update",
+           "fuzz_pair_line"]
 LENGTHS = [0, 8, 24, 48, 96, 160, 256, 384, 512, 768, 1024]
 PER_TARGET = 22
 
