@@ -214,6 +214,12 @@ void evaluate_line(const Params& params, const SegmentRef& A, const SegmentRef& 
   const bool fd = K && params.tangent == B2B_TANGENT_FD;
   line_sum(params, A, B, n_points, hist_old, hist_new, out, point_info, fd ? nullptr : K);
   if (!K) return;
+  if (fd && out.contact_status != B2B_CONTACT_ACTIVE) {
+    // No force, no tangent (b2b_pair.h), whatever differences across the
+    // contact's onset would say.
+    std::memset(K, 0, kNN * sizeof(double));
+    return;
+  }
   if (fd) {
     std::vector<double> scratch(static_cast<size_t>(n_points + 1) * history_length(params));
     fd_tangent_of(A, B, K, [&](const SegmentRef& a, const SegmentRef& b, double* r) {

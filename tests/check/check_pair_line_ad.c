@@ -415,9 +415,7 @@ START_TEST(tangent_options) {
         ck_assert_int_eq(l.status, o.status);
         if (l.status != B2B_CONTACT_ACTIVE) continue;
         const double e = rel_err(l.K, o.K, 576);
-        /* MAIN with ALL_ANGLE: the library's flag is wrong (known_bug_main_flag) */
-        if (!(opt == B2B_TANGENT_MAIN && type == B2B_CONTACT_TYPE_ALL_ANGLE))
-          ck_assert_msg(l.li[B2B_LINE_INFO_SYMMETRIC] == o.li[B2B_LINE_INFO_SYMMETRIC],
+        ck_assert_msg(l.li[B2B_LINE_INFO_SYMMETRIC] == o.li[B2B_LINE_INFO_SYMMETRIC],
                         "option %d: symmetric flag %g / %g", opt,
                         l.li[B2B_LINE_INFO_SYMMETRIC], o.li[B2B_LINE_INFO_SYMMETRIC]);
         if (opt != B2B_TANGENT_FD)
@@ -474,7 +472,7 @@ START_TEST(checks_of_the_checks) {
 }
 END_TEST
 
-/* LIBRARY BUG (fails until fixed): with contact_type ALL_ANGLE and the
+/* Regression (a library bug this campaign found, fixed): with contact_type ALL_ANGLE and the
  * tangent option MAIN, line_info[B2B_LINE_INFO_SYMMETRIC] is 0 inside the
  * blending range although the MAIN tangent (the parts' weighted main terms
  * -f' G G^T, no weight derivatives) is exactly symmetric, as the returned
@@ -483,7 +481,7 @@ END_TEST
  * (lines 99 and 139) without asking whether the weight derivative terms
  * are in the tangent (main_only skips them). A host choosing its solver by
  * the flag picks a non-symmetric one needlessly. */
-START_TEST(known_bug_main_flag) {
+START_TEST(regression_main_flag) {
   b2b_params *p = line_params(B2B_LAW_LINEAR, B2B_CONTACT_TYPE_ALL_ANGLE, 0, B2B_TANGENT_MAIN);
   tst_rng rng;
   tst_rng_seed(&rng, 31004);
@@ -500,7 +498,7 @@ START_TEST(known_bug_main_flag) {
     if (!(lam > 0.0 && lam < 1.0)) continue;
     ck_assert_msg(tst_asymmetry(l.K) == 0.0, "MAIN tangent not symmetric");
     ck_assert_msg(l.li[B2B_LINE_INFO_SYMMETRIC] == 1.0,
-                  "LIBRARY BUG: ALL_ANGLE with MAIN, lambda_P %.3f: the tangent is symmetric "
+                  "ALL_ANGLE with MAIN, lambda_P %.3f: the tangent is symmetric "
                   "but line_info[SYMMETRIC] = %g",
                   lam, l.li[B2B_LINE_INFO_SYMMETRIC]);
     ++checked;
@@ -510,7 +508,7 @@ START_TEST(known_bug_main_flag) {
 }
 END_TEST
 
-/* LIBRARY BUG (fails until fixed): the frictionless line element (LINE,
+/* Regression (a library bug this campaign found, fixed): the frictionless line element (LINE,
  * tangent EXACT, outside any blend) reports line_info[SYMMETRIC] = 1 for a
  * tangent that is symmetric only to rounding: src/pair/line_contact.cpp
  * (line_sum) adds the length element's terms as s r_i gJ^T (with the
@@ -527,7 +525,7 @@ static int bit_symmetric(const double *K) {
   return 1;
 }
 
-START_TEST(known_bug_symmetric_to_rounding) {
+START_TEST(regression_symmetric_to_rounding) {
   b2b_params *p = line_params(B2B_LAW_LINEAR, B2B_CONTACT_TYPE_LINE, 0, B2B_TANGENT_EXACT);
   tst_rng rng;
   tst_rng_seed(&rng, 31005);
@@ -548,7 +546,7 @@ START_TEST(known_bug_symmetric_to_rounding) {
          "(largest asymmetry %.2e relative)\n", exact, flagged, worst);
   ck_assert_int_ge(flagged, 8);
   ck_assert_msg(exact == flagged,
-                "LIBRARY BUG: line_info[SYMMETRIC] = 1 but only %d of %d tangents are "
+                "line_info[SYMMETRIC] = 1 but only %d of %d tangents are "
                 "symmetric bit for bit (asymmetry up to %.2e)",
                 exact, flagged, worst);
   b2b_params_destroy(&p);
@@ -563,9 +561,9 @@ int main(void) {
   tcase_add_test(tc, tangent_options);
   tcase_add_test(tc, checks_of_the_checks);
   suite_add_tcase(s, tc);
-  TCase *bugs = tcase_create("known_library_bugs");
-  tcase_add_test(bugs, known_bug_main_flag);
-  tcase_add_test(bugs, known_bug_symmetric_to_rounding);
-  suite_add_tcase(s, bugs);
+  TCase *fixed = tcase_create("regressions");
+  tcase_add_test(fixed, regression_main_flag);
+  tcase_add_test(fixed, regression_symmetric_to_rounding);
+  suite_add_tcase(s, fixed);
   return tst_run_suite(s);
 }

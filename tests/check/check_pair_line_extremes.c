@@ -609,7 +609,7 @@ START_TEST(one_and_32_points) {
 }
 END_TEST
 
-/* LIBRARY BUG (fails until fixed): ALL_ANGLE above point_angle with a
+/* Regression (a library bug this campaign found, fixed): ALL_ANGLE above point_angle with a
  * line penalty whose force overflows. The integration points have weight
  * 1 - lambda = 0, so their (infinite) forces reach neither line_info nor
  * the residual, but each point's point_info (NORMAL_FORCE, ENERGY) is inf
@@ -619,7 +619,7 @@ END_TEST
  * line_sum: out.overflow tests line_info, residual, hist_new and K, never
  * point_info (nor the unweighted per-point values). At 2 degrees (weight
  * 1) the same penalty is B2B_ERR_RANGE, as it should be. */
-START_TEST(known_bug_point_info_overflow) {
+START_TEST(regression_point_info_overflow) {
   b2b_params *p = make_params(B2B_LAW_LINEAR, B2B_CONTACT_TYPE_ALL_ANGLE, 0, DBL_MAX / 4, EPS_N);
   const double big_radii[2] = {5.0, 5.0};
   double X[24];
@@ -630,20 +630,20 @@ START_TEST(known_bug_point_info_overflow) {
   straight(1.2, 0.5, 30.0, 1.0, 0.0, X);
   /* run() asserts finite outputs on B2B_OK: this is where it fails */
   run(p, kLinearSeg, X, NULL, big_radii, 6, NULL, &r,
-      "LIBRARY BUG: huge line penalty at 30 degrees (line weight 0), point_info");
+      "huge line penalty at 30 degrees (line weight 0), point_info");
   ck_assert_msg(r.rc == B2B_ERR_RANGE, "returned %d", r.rc);
   b2b_params_destroy(&p);
 }
 END_TEST
 
-/* LIBRARY BUG (fails until fixed; found by fuzz_pair_line): with the
+/* Regression (a library bug fuzz_pair_line found, fixed): with the
  * tangent option FD, a pair that carries no force (status OPEN: the beams
  * touch within 1e-9) returns a non-zero tangent, the differences of
  * residuals at perturbed configurations that do penetrate.
  * b2b_pair.h: "Where the pair carries no force both are zero" (and
  * b2b_pair_eval's FD tangent is zero there). src/pair/line_contact.cpp,
  * evaluate_line: the FD branch fills K whatever out.contact_status is. */
-START_TEST(known_bug_fd_tangent_not_active) {
+START_TEST(regression_fd_tangent_not_active) {
   b2b_params *p = NULL;
   char msg[B2B_ERRMSG_LEN];
   ck_assert(b2b_params_create(&p, msg, sizeof msg) == B2B_OK);
@@ -664,7 +664,7 @@ START_TEST(known_bug_fd_tangent_not_active) {
   ck_assert_msg(all_zero(r.R, 24), "OPEN with a residual");
   double m = 0.0;
   for (int k = 0; k < 576; ++k) m = fmax(m, fabs(r.K[k]));
-  ck_assert_msg(m == 0.0, "LIBRARY BUG: status OPEN, tangent option FD: max |K| = %g", m);
+  ck_assert_msg(m == 0.0, "status OPEN, tangent option FD: max |K| = %g", m);
   b2b_params_destroy(&p);
 }
 END_TEST
@@ -682,9 +682,9 @@ int main(void) {
   tcase_add_test(tc, non_finite_inputs);
   tcase_add_test(tc, one_and_32_points);
   suite_add_tcase(s, tc);
-  TCase *bugs = tcase_create("known_library_bugs");
-  tcase_add_test(bugs, known_bug_point_info_overflow);
-  tcase_add_test(bugs, known_bug_fd_tangent_not_active);
-  suite_add_tcase(s, bugs);
+  TCase *fixed = tcase_create("regressions");
+  tcase_add_test(fixed, regression_point_info_overflow);
+  tcase_add_test(fixed, regression_fd_tangent_not_active);
+  suite_add_tcase(s, fixed);
   return tst_run_suite(s);
 }

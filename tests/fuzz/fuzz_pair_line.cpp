@@ -220,15 +220,11 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
   FUZZ_REQUIRE(same_bits(r.hist_new + hist_len, untouched.hist_new + hist_len,
                          sizeof(double) * (kHistCap - hist_len)),
                "hist_new written beyond hist_len %d", hist_len);
-  // LIBRARY BUG (check_pair_line_extremes known_bug_point_info_overflow;
-  // reproducer corpus/fuzz_pair_line/regress-point-info-overflow): with
-  // ALL_ANGLE, points of weight 0 may report an overflowed (inf) force or
-  // energy with B2B_OK; until fixed, point_info's finiteness is asserted
-  // for the other contact types only. Fixed: drop the condition.
-  if (lay.want_point_info && p.lp.type != B2B_CONTACT_TYPE_ALL_ANGLE) {
+  // point_info is finite on success (a point of weight 0 in the blend
+  // whose force overflows is B2B_ERR_RANGE: regress-point-info-overflow).
+  if (lay.want_point_info)
     FUZZ_REQUIRE(all_finite(r.point_info, B2B_PAIR_INFO_LEN * n),
                  "point_info not finite (status %d, contact type %d)", r.status, p.lp.type);
-  }
   if (lay.want_point_info) {
     FUZZ_REQUIRE(same_bits(r.point_info + 32 * n, untouched.point_info + 32 * n,
                            sizeof(double) * 32 * (kMaxP - n)),
@@ -275,14 +271,10 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
                  "contact type %d with a point part (status %g, weight %g)", p.lp.type, ps, lam);
   const double sym = li[B2B_LINE_INFO_SYMMETRIC];
   FUZZ_REQUIRE(sym == 0.0 || sym == 1.0, "line_info SYMMETRIC %g", sym);
-  // The contract is bit-for-bit symmetry (as fuzz_pair_eval asserts); the
-  // line element's frictionless tangent is symmetric only to rounding
-  // (LIBRARY BUG, check_pair_line_ad known_bug_symmetric_to_rounding; the
-  // reproducer is corpus/fuzz_pair_line/regress-symmetric-to-rounding), so
-  // until it is fixed this asserts symmetry to 1e-12 of the largest entry
-  // and the campaign can go on. Fixed: put exactly_symmetric back.
+  // The contract is bit-for-bit symmetry (as fuzz_pair_eval asserts;
+  // regress-symmetric-to-rounding).
   if (sym == 1.0 && lay.want_tangent)
-    FUZZ_REQUIRE(asymmetry(r.tangent, ldk) <= 1e-12,
+    FUZZ_REQUIRE(asymmetry(r.tangent, ldk) == 0.0,
                  "line_info says symmetric, the tangent is not (asymmetry %.2e of the largest "
                  "entry; status %d, type %d, friction %g, option %d, min gap %g)",
                  asymmetry(r.tangent, ldk), r.status, p.lp.type, p.lp.friction, p.lp.tangent,
@@ -294,11 +286,9 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
     for (int i = 0; i < 24; ++i)
       FUZZ_REQUIRE(r.residual[i] == 0.0, "status %d with residual[%d] = %g", r.status, i,
                    r.residual[i]);
-    // LIBRARY BUG (check_pair_line_extremes known_bug_fd_tangent_not_active;
-    // reproducer corpus/fuzz_pair_line/regress-fd-tangent-open): the FD
-    // tangent of a pair that carries no force is not zeroed (the perturbed
-    // configurations touch). Until fixed, not asserted for FD.
-    if (lay.want_tangent && p.lp.tangent != B2B_TANGENT_FD)
+    // No force, no tangent, with the FD option too (regress-fd-tangent-open:
+    // its perturbed configurations touched).
+    if (lay.want_tangent)
       for (int c = 0; c < 24; ++c)
         for (int i = 0; i < 24; ++i)
           FUZZ_REQUIRE(r.tangent[i + ldk * c] == 0.0,
