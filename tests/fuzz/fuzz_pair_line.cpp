@@ -309,8 +309,7 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
                    q[B2B_INFO_ANGLE]);
       const double* T = q + B2B_INFO_TANGENTIAL_FORCE;
       const double tm = std::hypot(T[0], std::hypot(T[1], T[2]));
-      // (mu f_N is computed only with friction: 0 times an overflowed f_N of
-      // the ALL_ANGLE bug above would be NaN)
+      // (mu f_N only with friction: 0 times an infinite f_N would be NaN)
       FUZZ_REQUIRE(p.lp.friction > 0.0
                        ? tm <= p.lp.friction * q[B2B_INFO_NORMAL_FORCE] * (1 + 1e-12) + 1e-300
                        : tm == 0.0,
