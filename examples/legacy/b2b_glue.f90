@@ -1,16 +1,14 @@
-! b2b_glue.f90 -- every call of the legacy frame code into b2b: external
-! subroutines with implicit interfaces, called from FORTRAN 77 like its own.
-! The model lives here (the F77 code has nowhere to keep a C handle). Numbers
-! pass as they are: nodes 1..numnp, x(ndm,numnp) and u(ndf,numnp) (rows 1..3
-! read), id(ndf,numnp) equations (0: constrained), FEAP's profile jp, ad, au,
-! al, b = F_ext - F_int. A failing call stops with b2b's message (not cbupd).
+! b2b_glue.f90 -- all of the legacy frame code's calls into b2b: external
+! subroutines, called from FORTRAN 77 like its own; the model is kept here.
+! The F77 numbers pass as they are: nodes, x(ndm,*), u(ndf,*), id(ndf,*)
+! (0: constrained), FEAP's jp, ad, au, al, b = F_ext - F_int. A failing call
+! stops with b2b's message (not cbupd).
 module b2b_glue_model
   use b2b
   implicit none
   type(b2b_model), save :: model
   type(b2b_params), save :: params
 end module
-
 ! The model, and its contact law: 0 linear, 1 quadratic (gap g0); penalty
 ! pen; Coulomb fmu with tangential penalty pent (fmu = 0: frictionless).
 subroutine cbinit(law, pen, g0, fmu, pent)
@@ -26,9 +24,7 @@ subroutine cbinit(law, pen, g0, fmu, pent)
   call b2b_params_finalize(params)
   call b2b_model_create(model)
 end subroutine
-
-! A beam through nodes(1:nn), radius rad, contact group igrp; then cbfin:
-! groups ig1 and ig2 touch, the code has numnp nodes.
+! A beam: nodes(1:nn), radius rad, group igrp. cbfin: ig1, ig2 touch; numnp.
 subroutine cbbeam(nodes, nn, rad, igrp)
   use b2b_glue_model
   integer, intent(in) :: nn, nodes(nn), igrp
@@ -42,9 +38,7 @@ subroutine cbfin(ig1, ig2, numnp)
   call b2b_model_set_group_pair(model, ig1, ig2, params)
   call b2b_model_finalize(model, numnp)
 end subroutine
-
-! Every Newton iteration: the contacts at x + u. ierr /= 0 (message printed,
-! the model unchanged): a failed iteration, the caller cuts back.
+! Every iteration: contacts at x + u. ierr /= 0: failed, the caller cuts back.
 subroutine cbupd(x, u, ndm, ndf, numnp, ierr)
   use b2b_glue_model
   integer, intent(in) :: ndm, ndf, numnp
@@ -54,16 +48,13 @@ subroutine cbupd(x, u, ndm, ndf, numnp, ierr)
   call b2b_model_update_xu(model, x, u, ierr=ierr, errmsg=msg)
   if (ierr /= 0) write (*, '(2a)') '   b2b: ', trim(msg)
 end subroutine
-
-! After cbupd: ihc(j) the contacts' column height of equation j (0: none),
-! for the caller to merge with its own and re-point jp.
+! After cbupd: ihc(j) the contacts' column height of equation j (0: none).
 subroutine cbprof(id, ndf, numnp, neq, ihc)
   use b2b_glue_model
   integer, intent(in) :: ndf, numnp, neq, id(ndf, numnp)
   integer, intent(inout) :: ihc(neq)
   call b2b_model_tangent_profile(model, id, ihc)
 end subroutine
-
 ! b = b - contact residual (part of F_int), the tangent into ad, au, al.
 subroutine cbasm(id, ndf, numnp, neq, jp, ad, au, al, b)
   use b2b_glue_model
@@ -73,9 +64,7 @@ subroutine cbasm(id, ndf, numnp, neq, jp, ad, au, al, b)
   call b2b_model_add_tangent_profile(model, id, 1.0_c_double, jp, ad, au(1:jp(neq)), &
                                      al(1:jp(neq)))
 end subroutine
-
-! Iteration 1 of a step: b = b - K_contact(free, prescribed) dup, dup the
-! step's prescribed increments per node (read on constrained dofs only).
+! Iteration 1 of a step: b = b - K_contact(free, prescribed) dup (per node).
 subroutine cbcpr(id, ndf, numnp, neq, dup, b)
   use b2b_glue_model
   integer, intent(in) :: ndf, numnp, neq, id(ndf, numnp)
@@ -83,7 +72,6 @@ subroutine cbcpr(id, ndf, numnp, neq, dup, b)
   real(c_double), intent(inout) :: b(neq)
   call b2b_model_add_constrained_product(model, id, dup, -1.0_c_double, b)
 end subroutine
-
 ! For reactions: r(i,n) += the contact's internal force on dof i <= 3 of
 ! node n, free or constrained (here every dof has an equation of its own).
 subroutine cbreac(ndf, numnp, r)
@@ -94,9 +82,7 @@ subroutine cbreac(ndf, numnp, r)
   ieq = reshape([(i, i = 1, ndf * numnp)], [ndf, numnp])
   call b2b_model_add_residual(model, ieq, r)
 end subroutine
-
-! The last update's active, slipping, handover hops, committed contacts
-! lost, crossed (> 0 once converged: cut back); fn the sum of f_N.
+! Last update: active, slipping, hops, lost, crossed contacts; fn: sum f_N.
 subroutine cbstat(nact, nslip, nhop, nlost, ncrs, fn)
   use b2b_glue_model
   integer, intent(out) :: nact, nslip, nhop, nlost, ncrs
@@ -111,7 +97,6 @@ subroutine cbstat(nact, nslip, nhop, nlost, ncrs, fn)
   ncrs = c(B2B_IX_COUNT_CROSSED)
   fn = s(B2B_IX_TOTAL_NORMAL_FORCE)
 end subroutine
-
 ! The audit: pairs overlapping by > 1% of the smaller radius without force.
 subroutine cbaud(nfnd)
   use b2b_glue_model
@@ -119,7 +104,6 @@ subroutine cbaud(nfnd)
   nfnd = 0
   call b2b_model_audit(model, 0.01_c_double, nfnd)
 end subroutine
-
 ! Converged step: commit; cut-back: revert; the end: free the model.
 subroutine cbcmt()
   use b2b_glue_model

@@ -16,7 +16,7 @@ c     (1e-10 of the step's largest residual, about P): the check allows
 c     1e-8 of P for the forces and of P c1 for the deflections; exactly
 c     one contact once the gap is closed (none before), none crossed.
 c     Exit code 0 if every step passes, 1 otherwise.
-      program crossed
+      program cross
       implicit double precision (a-h, o-z)
       include 'lgcom.h'
       common /cscn/ pld, c1, c2, pen, gap, errmax, mid1, mid2, nbad
@@ -103,7 +103,7 @@ c     steps: a quarter of the load each
      &  ', g =', gap
       call solve
       call cbend
-      write (*, '(a,i3,a,i3,a,i3,a,es9.2)') ' steps', nstep,
+      write (*, '(a,i3,a,i3,a,i3,a,1pe9.2)') ' steps', nstep,
      &  ', Newton iterations', ntot, ', cut-backs', ncut,
      &  '; largest error/P', errmax
       if (nbad .gt. 0 .or. nstep .lt. 1) then
@@ -135,7 +135,7 @@ c     the lower beam's supports carry N, the upper one's P - N
       err = max(err, abs(w1 - (p - fnx)*c1)/(pld*c1),
      &          abs(w2 - fnx*c2)/(pld*c1))
       errmax = max(errmax, err)
-      write (*, '(a,i3,a,f6.3,a,i2,a,f9.6,a,f9.6,a,es8.1)') ' step',
+      write (*, '(a,i3,a,f6.3,a,i2,a,f9.6,a,f9.6,a,1pe8.1)') ' step',
      &  nstep, ' t =', t, ' (', nit, ' it): N =', fn,
      &  ', closed form', fnx, ', error/P', err
       write (*, '(a,f9.6,a,f9.6,a,f9.6,a,f9.6)') '   supports: lower',

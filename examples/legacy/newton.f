@@ -79,7 +79,7 @@ c     step has a configuration to check crossings against
    50   continue
         dt = 0.5d0*dt
         ncut = ncut + 1
-        write (*, '(a,f10.6,a,es10.3)') '   cut back at t =', t,
+        write (*, '(a,f10.6,a,1pe10.3)') '   cut back at t =', t,
      &    ': dt =', dt
         if (dt .lt. dtmin) stop 'solve: step below dtmin'
         goto 10
@@ -127,7 +127,7 @@ c     that is not finite or maxit iterations: not converged.
         rn = sqrt(rn)
         if (.not. (rn .le. 1.d300)) return
         rmax = max(rmax, rn)
-        if (iprt .ne. 0) write (*, '(a,i3,a,es10.3)') '     it', it,
+        if (iprt .ne. 0) write (*, '(a,i3,a,1pe10.3)') '     it', it,
      &    '  |F_ext - F_int| =', rn
         if (it .gt. 1 .and. rn .le. rtol*rmax) then
           conv = .true.

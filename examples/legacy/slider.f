@@ -113,7 +113,7 @@ c     steps: the whole way out at once first
       call solve
       call cbend
       njnt = 2*(int((xs0 + trav)/hel) - int(xs0/hel))
-      write (*, '(a,i3,a,i4,a,i3,a,es9.2)') ' steps', nstep,
+      write (*, '(a,i3,a,i4,a,i3,a,1pe9.2)') ' steps', nstep,
      &  ', Newton iterations', ntot, ', cut-backs', ncut,
      &  '; largest error / P', errmax
       write (*, '(a,i3,a,i3,a)') ' the contact was handed over',
@@ -148,7 +148,7 @@ c     uchk: the checks of a converged step (called by solve)
      &  ', A =', ranch
       if (err .gt. 1.d-8 .or. nact .ne. 1 .or. nslip .ne. 1 .or.
      &    nlost .ne. 0 .or. ncrs .ne. 0) then
-        write (*, '(a,es9.2,a,i2,a,i2,a,i2,a,i2)') '   FAILED: error',
+        write (*, '(a,1pe9.2,a,i2,a,i2,a,i2,a,i2)') '   FAILED: error',
      &    err, ', active', nact, ', slipping', nslip, ', lost', nlost,
      &    ', crossed', ncrs
         nbad = nbad + 1
