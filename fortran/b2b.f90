@@ -841,6 +841,18 @@ module b2b
       character(len=*), intent(out), optional :: errmsg
     end subroutine
 
+    !> The arguments every pair procedure shares (b2b_pair_eval, _ends,
+    !> _line): segments(3,2) within C's int range, X(3,8), radii(2); ok =
+    !> .false. after the first problem is reported.
+    module subroutine check_pair_shapes(procname, segments, X, radii, ok, ierr, errmsg)
+      character(len=*), intent(in) :: procname
+      integer, intent(in) :: segments(:, :)
+      real(c_double), intent(in) :: X(:, :), radii(:)
+      logical, intent(out) :: ok
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
     !> check_ints for the elements of an array argument a(:, :).
     module subroutine check_int_matrix(procname, argname, a, ok, ierr, errmsg)
       character(len=*), intent(in) :: procname, argname

@@ -318,20 +318,8 @@ contains
     real(c_double) :: h0(1), h1(1)
     logical :: ok
 
-    if (.not. shape_is(shape(segments), [3, 2])) then
-      call finish_size(me, 'segments', shape(segments), [3, 2], ierr, errmsg)
-      return
-    end if
-    call check_int_matrix(me, 'segments', segments, ok, ierr, errmsg)
+    call check_pair_shapes(me, segments, X, radii, ok, ierr, errmsg)
     if (.not. ok) return
-    if (.not. shape_is(shape(X), [3, 8])) then
-      call finish_size(me, 'X', shape(X), [3, 8], ierr, errmsg)
-      return
-    end if
-    if (.not. shape_is(shape(radii), [2])) then
-      call finish_size(me, 'radii', shape(radii), [2], ierr, errmsg)
-      return
-    end if
     if (size(hist_new) /= size(hist_old)) then
       call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': hist_old and hist_new differ ' // &
                        'in size (' // trim(int_text(size(hist_old))) // ' and ' // &

@@ -70,6 +70,26 @@ contains
     end do
   end procedure
 
+  module procedure check_pair_shapes
+    ok = .false.
+    if (.not. shape_is(shape(segments), [3, 2])) then
+      call finish_size(procname, 'segments', shape(segments), [3, 2], ierr, errmsg)
+      return
+    end if
+    call check_int_matrix(procname, 'segments', segments, ok, ierr, errmsg)
+    if (.not. ok) return
+    ok = .false.
+    if (.not. shape_is(shape(X), [3, 8])) then
+      call finish_size(procname, 'X', shape(X), [3, 8], ierr, errmsg)
+      return
+    end if
+    if (.not. shape_is(shape(radii), [2])) then
+      call finish_size(procname, 'radii', shape(radii), [2], ierr, errmsg)
+      return
+    end if
+    ok = .true.
+  end procedure
+
   module procedure check_int_matrix
     integer :: i, j
     ok = .true.

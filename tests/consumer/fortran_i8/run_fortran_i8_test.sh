@@ -5,7 +5,7 @@
 #   1. cmake --install the b2b build tree into a scratch prefix;
 #   2. compile <prefix>/<datadir>/b2b/fortran/b2b.f90 (which includes
 #      b2b_constants.inc from its own directory), then its submodules
-#      b2b_curve.f90, b2b_pair.f90, b2b_model.f90, b2b_support.f90, with
+#      b2b_curve.f90, b2b_pair.f90, b2b_pair_line.f90, b2b_model.f90, b2b_support.f90, with
 #      those flags;
 #   3. compile consumer_i8.f90 with them, link it with the module's objects and
 #      $(pkg-config --libs b2b) (--static for a static libb2b);
@@ -101,7 +101,7 @@ run() {
 echo "== 1. install into $prefix"
 run install "$cmake" --install "$build_dir" --prefix "$prefix"
 msrc=$prefix/$datadir/b2b/fortran
-module_sources="b2b.f90 b2b_curve.f90 b2b_pair.f90 b2b_model.f90 b2b_support.f90"  # module first
+module_sources="b2b.f90 b2b_curve.f90 b2b_pair.f90 b2b_pair_line.f90 b2b_model.f90 b2b_support.f90"  # module first
 for f in $module_sources b2b_constants.inc; do
   if [ ! -f "$msrc/$f" ]; then
     echo "FAILED: the install tree lacks $msrc/$f"
