@@ -6,7 +6,8 @@
  *     (totals[B2B_TOTAL_LINE_POINTS] = segments of A under B x points),
  *     counts[B2B_COUNT_LINE] = ACTIVE, and without line contact (POINT) the
  *     same scene is PARALLEL, held only by A's end nodes (end contact) with
- *     a fraction of the force (what line contact is for);
+ *     a fraction of the force (what line contact is for); the
+ *     interpenetration audit finds nothing uncarried with line contact;
  *   - the model's contact equals b2b_pair_eval_line on the same segments
  *     (residual, tangent, force: bit for bit);
  *   - friction: B slid along A across several of B's joints in small
@@ -165,6 +166,12 @@ START_TEST(parallel_beams_closed_form) {
                   "%s: resultants %g on A, %g on B, want %g", tst_kind_name(kind), fa[2], fb[2],
                   -F);
     for (int i = 0; i < 3; ++i) ck_assert(fabs(fa[i] + fb[i]) <= 1e-10 * F);
+    /* the interpenetration audit sees the overlap carried */
+    int n_found = -1;
+    char msg[B2B_ERRMSG_LEN];
+    ck_assert(b2b_model_audit(m, 0.01, &n_found, NULL, NULL, NULL, 0, msg, sizeof msg) == B2B_OK);
+    ck_assert_msg(n_found == 0, "%s: the audit finds %d overlaps without force", tst_kind_name(kind),
+                  n_found);
     b2b_model_destroy(&m);
     b2b_params_destroy(&p);
     /* point contact only: PARALLEL, no force */
