@@ -378,9 +378,11 @@ enum {
   B2B_LINE_INFO_LENGTH = 10,       /* sum w_i J_i: the current length of segment A */
   B2B_LINE_INFO_POINT_WEIGHT = 11, /* ALL_ANGLE: lambda_P of the point element, else 0 */
   B2B_LINE_INFO_POINT_STATUS = 12, /* ALL_ANGLE: the point element's B2B_CONTACT_*, else -1 */
-  B2B_LINE_INFO_POINT_FORCE = 13   /* ALL_ANGLE: lambda_P f_N of the point element */
+  B2B_LINE_INFO_POINT_FORCE = 13,  /* ALL_ANGLE: lambda_P f_N of the point element */
+  B2B_LINE_INFO_POINT_FRICTION_STATE = 14 /* ALL_ANGLE: the point element's B2B_FRICTION_*
+                                             where it carries force, else 0 */
 };
-#define B2B_LINE_INFO_LEN 16 /* entries 14, 15 are reserved (written as 0) */
+#define B2B_LINE_INFO_LEN 16 /* entry 15 is reserved (written as 0) */
 
 /* Friction state of a pair (info[B2B_INFO_FRICTION_STATE]). Values are fixed. */
 enum { B2B_FRICTION_NONE = 0, B2B_FRICTION_STICK = 1, B2B_FRICTION_SLIP = 2 };

@@ -26,6 +26,8 @@ int line_pair_points(const pair::Params& p, const pair::SegmentRef& A, const pai
 // committed eta outside [-1, 1)) takes the committed history of the pair
 // (a, neighbour of b) that owned it, mapped across B's joint
 // (handover_committed): its friction force and normal follow the point.
+// Slot 0 (ALL_ANGLE's point element) likewise from the pair of a
+// neighbouring segment of B or of A (one joint per update).
 void take_over_points(const BeamTable& table, const ContactState& committed,
                       const std::vector<double>& committed_coords, const NodeIndex& used_index,
                       int a, int b, int n, int hl, double* hist);
@@ -33,8 +35,10 @@ void take_over_points(const BeamTable& table, const ContactState& committed,
 // res: status, overflow and residual of lr; info: the integrated normal
 // force, energy and dissipation, the smallest gap, symmetry, the count of
 // points carrying force (B2B_INFO_LINE_POINTS), SLIP if a point slips else
-// STICK if one sticks, and xi, eta, the points, the normal and the angle of
-// the deepest point carrying force (point_info of evaluate_line).
+// STICK if one sticks (the point part of ALL_ANGLE included), and xi, eta,
+// the points, the normal and the angle of the deepest point carrying force
+// (point_info of evaluate_line), or of the point part where it carries at
+// least half (its weight >= 1/2), with its weighted tangential force.
 void summarize_line(const pair::LineResult& lr, const double* point_info, int n,
                     pair::PairResult& res);
 

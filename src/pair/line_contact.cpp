@@ -76,6 +76,7 @@ void line_sum(const Params& params, const SegmentRef& A, const SegmentRef& B, in
     std::memcpy(hist_new, pr.history, hl * sizeof(double));
     const int st = pr.contact_status;
     info[B2B_LINE_INFO_POINT_STATUS] = st;
+    std::memcpy(out.point_part, pr.info, sizeof pr.info);
     if (st == B2B_CONTACT_OPEN || st == B2B_CONTACT_ACTIVE)
       info[B2B_LINE_INFO_MIN_GAP] = std::fmin(info[B2B_LINE_INFO_MIN_GAP], pr.info[B2B_INFO_GAP]);
     BlendWeight w;
@@ -83,6 +84,7 @@ void line_sum(const Params& params, const SegmentRef& A, const SegmentRef& B, in
     tally.add(st, w.lambda > 0.0);
     if (w.lambda > 0.0) {
       info[B2B_LINE_INFO_POINT_WEIGHT] = w.lambda;
+      info[B2B_LINE_INFO_POINT_FRICTION_STATE] = pr.info[B2B_INFO_FRICTION_STATE];
       info[B2B_LINE_INFO_POINT_FORCE] = w.lambda * pr.info[B2B_INFO_NORMAL_FORCE];
       info[B2B_LINE_INFO_NORMAL_FORCE] += w.lambda * pr.info[B2B_INFO_NORMAL_FORCE];
       info[B2B_LINE_INFO_ENERGY] += w.lambda * pr.info[B2B_INFO_ENERGY];
@@ -190,6 +192,7 @@ void line_sum(const Params& params, const SegmentRef& A, const SegmentRef& B, in
   info[B2B_LINE_INFO_SYMMETRIC] = symmetric ? 1.0 : 0.0;
   out.contact_status = tally.status();
   out.overflow = !all_finite(info, kLineInfoLength) || !all_finite(out.residual, kNdof) ||
+                 !all_finite(out.point_part, kInfoLength) ||
                  !all_finite(hist_new, (n + 1) * hl) || (K && !all_finite(K, kNN)) ||
                  (point_info && !all_finite(point_info, kInfoLength * n));
   // Symmetric in exact arithmetic (no friction, no weight derivative): the

@@ -34,6 +34,9 @@ struct LineResult {
   int contact_status = 0;
   double info[kLineInfoLength] = {0};  // B2B_LINE_INFO_*
   double residual[kNdof] = {0};
+  // ALL_ANGLE: the point element's own info (unweighted; zero otherwise),
+  // what a contact model reports where the point part carries the force.
+  double point_part[kInfoLength] = {0};
 };
 
 // n_points in 1 .. kGaussMaxPoints; hist_old, hist_new: (n_points + 1)

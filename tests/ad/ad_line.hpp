@@ -161,6 +161,7 @@ int evaluate_line(const Settings& pst, const Settings& lst, const LineSettings& 
       for (int r = 0; r < kNdof; ++r) out.R[r] += lam * q.R[r];
       const double lv = val(lam);
       li[B2B_LINE_INFO_POINT_FORCE] = lv * q.info[B2B_INFO_NORMAL_FORCE];
+      li[B2B_LINE_INFO_POINT_FRICTION_STATE] = q.info[B2B_INFO_FRICTION_STATE];
       li[B2B_LINE_INFO_NORMAL_FORCE] += lv * q.info[B2B_INFO_NORMAL_FORCE];
       li[B2B_LINE_INFO_ENERGY] += lv * q.info[B2B_INFO_ENERGY];
       li[B2B_LINE_INFO_DISSIPATION] += lv * q.info[B2B_INFO_DISSIPATION];

@@ -20,6 +20,8 @@
  *   - threads: 1 and 2 threads give the same bytes;
  *   - ALL_ANGLE: A turned over B from 90 to 0 degrees at a fixed
  *     penetration, the total normal force continuous in the angle;
+ *   - ALL_ANGLE at 90 degrees (the point element): its friction history
+ *     follows the point across joints of B and of A;
  *   - tunnelling: A moved through B in one step comes back active on its
  *     committed side, every contact counted crossed (LINE and ALL_ANGLE);
  *   - a line set may replace a line set, not a point set (B2B_ERR_SIZE). */
@@ -363,6 +365,55 @@ START_TEST(all_angle_turn_continuous) {
 }
 END_TEST
 
+/* ALL_ANGLE at 90 degrees is the point element (weight 1): its history must
+ * follow the contact point across joints like a point contact's. B slid
+ * along its axis over two of its joints, then A along its own over two of
+ * its joints, in committed steps: the friction force stays mu f_N in every
+ * slipping step (it would restart from zero at each joint without the
+ * point part's handover), nothing lost. */
+START_TEST(all_angle_point_part_hands_over) {
+  b2b_params *p = params_of(B2B_CONTACT_TYPE_ALL_ANGLE, MU);
+  scene2 s;
+  place(&s, 2 * R - 0.003, -0.5, 2.0, 10, 90.0);
+  for (int k = 0; k <= s.nb; ++k) s.x[3 * (NSEG + 1 + k) + 1] = 0.03; /* off A's middle node */
+  b2b_model *m = model_of(&s, p, B2B_CURVE_HERMITE_NODAL);
+  char msg[B2B_ERRMSG_LEN];
+  update(m, &s, 0);
+  ck_assert(b2b_model_commit(m, msg, sizeof msg) == B2B_OK);
+  int slipping = 0;
+  for (int step = 1; step <= 70; ++step) {
+    const int phase = step <= 45 ? 0 : 1; /* B along x, then A along y */
+    if (phase == 0)
+      for (int k = 0; k <= s.nb; ++k) s.x[3 * (NSEG + 1 + k)] += 0.01;
+    else
+      for (int k = 0; k <= NSEG; ++k) s.x[3 * k + 1] += 0.01;
+    update(m, &s, 0);
+    int counts[16];
+    double totals[8];
+    stats(m, counts, totals);
+    ck_assert_msg(counts[B2B_COUNT_ACTIVE] == 1 && counts[B2B_COUNT_LOST] == 0,
+                  "step %d: %d active, %d lost", step, counts[B2B_COUNT_ACTIVE],
+                  counts[B2B_COUNT_LOST]);
+    double f[3 * 64], ft[3] = {0, 0, 0};
+    nodal_forces(m, NSEG + 2 + s.nb, f);
+    for (int k = 0; k <= NSEG; ++k)
+      for (int i = 0; i < 2; ++i) ft[i] += f[3 * k + i];
+    const double limit = MU * totals[B2B_TOTAL_NORMAL_FORCE];
+    const double t = hypot(ft[0], ft[1]);
+    if (step != 1 && step != 46) { /* the first step of each phase turns the force */
+      ++slipping;
+      ck_assert_msg(counts[B2B_COUNT_SLIP] == 1, "step %d: not slipping", step);
+      ck_assert_msg(fabs(t - limit) <= 1e-9 * limit, "step %d: friction %.15g, mu f_N %.15g",
+                    step, t, limit);
+    }
+    ck_assert(b2b_model_commit(m, msg, sizeof msg) == B2B_OK);
+  }
+  ck_assert_int_eq(slipping, 68);
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 START_TEST(tunnelling_parallel_beams_are_caught) {
   /* A committed above B with an open gap, then moved through B to below it
    * in one step: line pairs new since the commit, on the other side now.
@@ -425,6 +476,7 @@ int main(void) {
   tcase_add_test(tc, friction_slides_across_joints);
   tcase_add_test(tc, commit_revert_restore_threads);
   tcase_add_test(tc, all_angle_turn_continuous);
+  tcase_add_test(tc, all_angle_point_part_hands_over);
   tcase_add_test(tc, tunnelling_parallel_beams_are_caught);
   tcase_add_test(tc, replacement_keeps_the_contact_type);
   suite_add_tcase(s, tc);

@@ -254,7 +254,14 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
     FUZZ_REQUIRE(stick + slip == act, "stick %g + slip %g != active %g", stick, slip, act);
   else
     FUZZ_REQUIRE(stick == 0 && slip == 0, "stick/slip points without friction");
-  FUZZ_REQUIRE(li[14] == 0.0 && li[15] == 0.0, "reserved line_info %g %g", li[14], li[15]);
+  FUZZ_REQUIRE(li[15] == 0.0, "reserved line_info %g", li[15]);
+  {
+    const double pfs = li[B2B_LINE_INFO_POINT_FRICTION_STATE];
+    FUZZ_REQUIRE(pfs == 0.0 || (p.lp.friction > 0.0 && li[B2B_LINE_INFO_POINT_WEIGHT] > 0.0 &&
+                                (pfs == B2B_FRICTION_STICK || pfs == B2B_FRICTION_SLIP)),
+                 "point friction state %g (weight %g, friction %g)", pfs,
+                 li[B2B_LINE_INFO_POINT_WEIGHT], p.lp.friction);
+  }
   FUZZ_REQUIRE(li[B2B_LINE_INFO_NORMAL_FORCE] >= 0 && li[B2B_LINE_INFO_ENERGY] >= 0 &&
                    li[B2B_LINE_INFO_DISSIPATION] >= 0 && li[B2B_LINE_INFO_POINT_FORCE] >= 0,
                "negative force %g, energy %g, dissipation %g or point force %g",
