@@ -67,7 +67,7 @@ struct Contact {
   int nodes[8];
   double info[pair::kInfoLength];
   double residual[pair::kNdof];
-  int64_t tangent = -1;  // offset into Model::tangents_ (-1: none)
+  const double* tangent = nullptr;  // in one of Model::tangents_ (null: none)
 };
 
 class Model {
@@ -106,9 +106,7 @@ class Model {
   // is update(x + u) bit for bit.
   Problem update(const double* x, int ldx, const double* u, int ldu, bool want_tangent);
   const std::vector<Contact>& contacts() const { return contacts_; }
-  const double* tangent(const Contact& c) const {
-    return c.tangent < 0 ? nullptr : tangents_.data() + c.tangent;
-  }
+  const double* tangent(const Contact& c) const { return c.tangent; }
   const int* counts() const { return counts_; }
   const double* totals() const { return totals_; }
   bool has_tangents() const { return want_tangent_; }
@@ -156,7 +154,10 @@ class Model {
   // revert before that forgets them, so the next update measures again.
   bool arcs_committed_ = false;
   std::vector<Contact> contacts_;
-  std::vector<double> tangents_;
+  // The contacts' tangents, in the blocks the update's parallel chunks
+  // filled at their exact size: gathering them into one array would hold
+  // them twice at the update's peak.
+  std::vector<std::vector<double>> tangents_;
   int counts_[16] = {0};
   double totals_[8] = {0};
 

@@ -30,6 +30,7 @@
 #include "end_contact.hpp"
 #include "line_pair.hpp"
 #include "model.hpp"
+#include "pair_record.hpp"
 #include "segment_geometry.hpp"
 
 namespace b2b {
@@ -62,16 +63,21 @@ class Updater {
   Problem run();
 
  private:
+  // One pair to evaluate, and its outcome. Kept small: a bundle evaluates
+  // ~85 pairs a segment and ~1% carry force; what the later stages read of
+  // a pair is in its record (pair_record.hpp), which most pairs lack.
   struct Item {
-    uint64_t key;
     int a, b, gp;
-    const double* hist_old;  // committed history, or null (fresh)
-    pair::PairResult res;    // a line pair's: its summary (summarize_line)
-    int64_t tangent = -1;    // offset into tangents_
-    // A line pair (GroupPair::line): the length of its committed history,
-    // and its new histories, (n + 1) point histories for n integration points.
+    int8_t status = -1;     // B2B_CONTACT_* of its evaluation
+    bool overflow = false;  // an output of the element is not finite
+    // Lengths of its committed and of its new history: a line pair
+    // (GroupPair::line) has (n + 1) point histories for n integration points.
     int hist_old_len = 0;
-    std::vector<double> line_hist;
+    int hist_len = 0;
+    const double* hist_old = nullptr;  // committed history, or null (fresh)
+    const double* rec = nullptr;       // its record, or null
+    const double* tangent = nullptr;   // ACTIVE, with tangents: in tangent_blocks_
+    uint64_t key() const { return pair_key(a, b); }
   };
   Model& m_;
   const double* x_;
@@ -85,14 +91,20 @@ class Updater {
   bool has_committed_ = false;
   CommittedMotion motion_;
   std::vector<Box> swept_;
-  std::vector<double> synthetic_;         // committed normals of crossed pairs, as histories
+  // Histories made for pairs that crossed (committed normals; for line
+  // pairs committed_line_histories): their hist_old.
+  std::vector<std::vector<double>> synthetic_;
   std::vector<std::pair<int, int>> new_candidates_;
   bool rebuilt_ = false;
   std::vector<int> slot_;                 // segment -> index into built_ (-1: not built)
   std::vector<curve::Segment> built_;
   std::vector<double> built_X_;           // their patches, 12 each (for the FD tangent)
   std::vector<Item> items_;
-  std::vector<double> tangents_;
+  // The items' records and tangents in blocks of exact size at stable
+  // addresses: one per chunk of the parallel evaluation, then one per pair
+  // evaluated again after it (crossing, handover). No block is copied into
+  // another: the tangents go to the model as they are.
+  std::vector<std::vector<double>> records_, tangent_blocks_;
   std::vector<double> fresh_;             // zeros: a fresh history
   int hops_ = 0, lost_ = 0, near_ = 0;
   const std::vector<Box>& search_boxes() const { return has_committed_ ? swept_ : boxes_; }
@@ -117,13 +129,19 @@ class Updater {
                             kNoTangents};
   }
   SegmentEnds ends_of(int s) const;
-  void evaluate(Item& item, double* K) const;
-  void evaluate_line(Item& item, double* K) const;
+  // The element on one pair: res, and a line pair's new histories in
+  // line_hist (buffers of the caller, reused from pair to pair).
+  void evaluate(const Item& item, pair::PairResult& res, std::vector<double>& line_hist,
+                double* K) const;
+  void evaluate_line(const Item& item, pair::PairResult& res, std::vector<double>& line_hist,
+                     double* K) const;
+  int64_t settle(Item& item, const pair::PairResult& res, const std::vector<double>& line_hist,
+                 std::vector<double>& recs) const;
+  void settle_alone(Item& item, const pair::PairResult& res, const std::vector<double>& line_hist,
+                    const double* K);
   Problem evaluate_all();
   Problem crossed_pairs();
   Problem crossed_line_pair(Item& it);
-  // committed_line_histories of crossed line pairs (their hist_old)
-  std::vector<std::vector<double>> synthetic_line_;
   Problem handovers();
   Problem overflow(const Item& item) const;
   Problem totals_overflow() const;
@@ -282,8 +300,8 @@ void Updater::near_pairs() {
   const std::vector<std::pair<int, int>>& cand = rebuilt_ ? new_candidates_ : m_.candidates_;
   const double s = m_.effective_margin();
   const ContactState& committed = m_.committed_;
-  items_.clear();
-  for (const auto& c : cand) {
+  // The group pair of a candidate within contact reach, or -1.
+  const auto near = [this, s](const std::pair<int, int>& c) {
     const int gp = m_.group_pair_index(c.first, c.second);
     const pair::Params& p = m_.group_pairs_[gp].params;
     const double g0 = pair::contact_start_gap(p);
@@ -291,39 +309,47 @@ void Updater::near_pairs() {
                          g0 + s;
     // Swept boxes once there is a commit: a pair that met anywhere between
     // its committed and its current position is evaluated (crossing.hpp).
-    if (box_distance(search_boxes()[c.first], search_boxes()[c.second]) > reach) continue;
+    return box_distance(search_boxes()[c.first], search_boxes()[c.second]) > reach ? -1 : gp;
+  };
+  // Counted first, so that the items are allocated once, at their size (a
+  // vector grown by doubling holds up to twice that), with room for the
+  // pairs handovers add, at most one per committed contact.
+  size_t n_items = 0, n_committed = 0;
+  for (const auto& c : cand) n_items += near(c) >= 0;
+  for (const StoredPair& sp : committed.pairs) n_committed += sp.status == B2B_CONTACT_ACTIVE;
+  items_.clear();
+  items_.reserve(n_items + 2 * n_committed);
+  for (const auto& c : cand) {
+    const int gp = near(c);
+    if (gp < 0) continue;
     ++near_;
     Item it;
-    it.key = pair_key(c.first, c.second);
     it.a = c.first;
     it.b = c.second;
     it.gp = gp;
-    it.hist_old = nullptr;
     items_.push_back(it);
   }
   // The contacts of the last commit are evaluated whatever the boxes say:
   // their pair tells where the point went. Both lists are in key order (the
   // search returns its pairs sorted, a < b), so a merge keeps them so.
-  const auto by_key = [](const Item& x, const Item& y) { return x.key < y.key; };
+  const auto by_key = [](const Item& x, const Item& y) { return x.key() < y.key(); };
   const size_t n_near = items_.size();
   for (const StoredPair& sp : committed.pairs) {
     if (sp.status != B2B_CONTACT_ACTIVE) continue;
     Item it;
-    it.key = sp.key;
     it.a = sp.a;
     it.b = sp.b;
     it.gp = sp.group_pair;
-    it.hist_old = nullptr;
     items_.push_back(it);
   }
   std::inplace_merge(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(n_near),
                      items_.end(), by_key);
   items_.erase(std::unique(items_.begin(), items_.end(),
-                           [](const Item& x, const Item& y) { return x.key == y.key; }),
+                           [](const Item& x, const Item& y) { return x.key() == y.key(); }),
                items_.end());
   // A pair with a committed history keeps its orientation and reads it.
   for (Item& it : items_)
-    if (const StoredPair* sp = committed.find(it.key)) {
+    if (const StoredPair* sp = committed.find(it.key())) {
       it.a = sp->a;
       it.b = sp->b;
       it.hist_old = committed.history(*sp);
@@ -352,18 +378,22 @@ Problem Updater::build_one(int s) {
 
 Problem Updater::build_segments() {
   const int n = m_.table_.segment_count();
+  // The segments of the items, in increasing order: marked in slot_ (two
+  // per item, sorted, would cost more than the n slots), then numbered.
   slot_.assign(n, -1);
-  std::vector<int> need;
-  for (const Item& it : items_) {
-    need.push_back(it.a);
-    need.push_back(it.b);
-  }
-  std::sort(need.begin(), need.end());
-  need.erase(std::unique(need.begin(), need.end()), need.end());
-  const int nn = static_cast<int>(need.size());
+  for (const Item& it : items_) slot_[it.a] = slot_[it.b] = 0;
+  int nn = 0;
+  for (int s = 0; s < n; ++s) nn += slot_[s] == 0;
   if (nn == 0) return Problem();
+  std::vector<int> need;
+  need.reserve(nn);
+  for (int s = 0; s < n; ++s)
+    if (slot_[s] == 0) need.push_back(s);
+  // Reserved before they are made (a segment is ~3 kB): a reserve after
+  // would copy them all. Handovers add a few.
+  built_.reserve(nn + 64);
   built_.assign(nn, curve::Segment());
-  built_.reserve(nn + 64);  // handovers add a few
+  built_X_.reserve(12 * static_cast<size_t>(nn + 64));
   built_X_.assign(12 * static_cast<size_t>(nn), 0.0);
   for (int k = 0; k < nn; ++k) {
     slot_[need[k]] = k;
@@ -422,20 +452,22 @@ SegmentEnds Updater::ends_of(int s) const {
   return e;
 }
 
-void Updater::evaluate(Item& item, double* K) const {
-  if (m_.group_pairs_[item.gp].line) return evaluate_line(item, K);
+void Updater::evaluate(const Item& item, pair::PairResult& res, std::vector<double>& line_hist,
+                       double* K) const {
+  if (m_.group_pairs_[item.gp].line) return evaluate_line(item, res, line_hist, K);
   const double* h = item.hist_old ? item.hist_old : fresh_.data();
   const pair::Params& p = m_.group_pairs_[item.gp].params;
   const pair::SegmentRef A = ref(item.a), B = ref(item.b);
-  pair::evaluate_built(p, A, B, h, item.res, K);
-  if (item.res.contact_status == B2B_CONTACT_OUTSIDE)
-    resolve_end_contact(p, A, B, ends_of(item.a), ends_of(item.b), h, item.res, K);
+  pair::evaluate_built(p, A, B, h, res, K);
+  if (res.contact_status == B2B_CONTACT_OUTSIDE)
+    resolve_end_contact(p, A, B, ends_of(item.a), ends_of(item.b), h, res, K);
 }
 
 // A line pair (GroupPair::line): its committed histories, points taken over
 // from the pairs of B's neighbouring segments, the line element, and its
 // summary in the point element's layout (line_pair.hpp).
-void Updater::evaluate_line(Item& item, double* K) const {
+void Updater::evaluate_line(const Item& item, pair::PairResult& res,
+                            std::vector<double>& line_hist, double* K) const {
   const GroupPair& gp = m_.group_pairs_[item.gp];
   const int hl = gp.hist_len;
   const pair::SegmentRef A = ref(item.a), B = ref(item.b);
@@ -445,11 +477,48 @@ void Updater::evaluate_line(Item& item, double* K) const {
   if (item.hist_old) std::memcpy(in.data(), item.hist_old, len * sizeof(double));
   take_over_points(m_.table_, m_.committed_, m_.committed_coords_, m_.used_index_, item.a,
                    item.b, n, hl, in.data());
-  item.line_hist.assign(len, 0.0);
+  line_hist.assign(len, 0.0);
   double point_info[pair::kInfoLength * B2B_LINE_POINTS_MAX];
   pair::LineResult lr;
-  pair::evaluate_line(gp.params, A, B, n, in.data(), item.line_hist.data(), lr, point_info, K);
-  summarize_line(lr, point_info, n, item.res);
+  pair::evaluate_line(gp.params, A, B, n, in.data(), line_hist.data(), lr, point_info, K);
+  summarize_line(lr, point_info, n, res);
+}
+
+// Takes an evaluation into its item: the status, the overflow, the length
+// of the new history, and the record (if the status has one) appended to
+// recs. Returns the record's offset in recs, or -1. The item's record and
+// tangent are left null for the caller to point into their blocks.
+int64_t Updater::settle(Item& item, const pair::PairResult& res,
+                        const std::vector<double>& line_hist, std::vector<double>& recs) const {
+  const GroupPair& gp = m_.group_pairs_[item.gp];
+  item.status = static_cast<int8_t>(res.contact_status);
+  item.overflow = res.overflow;
+  item.hist_len = gp.line ? static_cast<int>(line_hist.size()) : gp.hist_len;
+  item.rec = nullptr;
+  item.tangent = nullptr;
+  const bool committed = item.hist_old != nullptr;
+  const size_t len = record_length(item.status, committed, item.hist_len);
+  if (len == 0) return -1;
+  const size_t at = recs.size();
+  recs.resize(at + len);
+  write_record(res, committed, gp.line ? line_hist.data() : res.history, item.hist_len,
+               recs.data() + at);
+  return static_cast<int64_t>(at);
+}
+
+// settle() for a pair evaluated after the parallel stage (rare: crossing,
+// handover): its record and tangent K (null: none) in blocks of their own.
+void Updater::settle_alone(Item& item, const pair::PairResult& res,
+                           const std::vector<double>& line_hist, const double* K) {
+  std::vector<double> rec;
+  if (settle(item, res, line_hist, rec) >= 0) {
+    records_.push_back(std::move(rec));
+    item.rec = records_.back().data();
+  }
+  if (K && item.status == B2B_CONTACT_ACTIVE) {
+    tangent_blocks_.emplace_back(K, K + pair::kNdof * pair::kNdof);
+    item.tangent = tangent_blocks_.back().data();
+  }
 }
 
 Problem Updater::overflow(const Item& item) const {
@@ -472,10 +541,11 @@ Problem Updater::overflow(const Item& item) const {
 Problem Updater::totals_overflow() const {
   double energy = 0.0, force = 0.0, dissipation = 0.0;
   for (const Item& it : items_) {
-    if (it.res.contact_status != B2B_CONTACT_ACTIVE) continue;
-    energy += it.res.info[B2B_INFO_ENERGY];
-    force += it.res.info[B2B_INFO_NORMAL_FORCE];
-    dissipation += it.res.info[B2B_INFO_DISSIPATION];
+    if (it.status != B2B_CONTACT_ACTIVE) continue;
+    const double* info = record_info(it.rec, it.hist_len);
+    energy += info[B2B_INFO_ENERGY];
+    force += info[B2B_INFO_NORMAL_FORCE];
+    dissipation += info[B2B_INFO_DISSIPATION];
     if (!std::isfinite(energy) || !std::isfinite(force) || !std::isfinite(dissipation) ||
         !std::isfinite(m_.committed_.dissipation + dissipation))
       return overflow(it);
@@ -487,40 +557,55 @@ Problem Updater::evaluate_all() {
   fresh_.assign(pair::kHistoryLengthMax, 0.0);
   const int n = static_cast<int>(items_.size());
   const int n_chunks = (n + kChunk - 1) / kChunk;
-  // Each chunk keeps the tangents of its active pairs; concatenated in chunk
-  // order below, so the layout does not depend on the threads.
-  std::vector<std::vector<double>> parts(want_tangent_ ? n_chunks : 0);
+  // One block of records and one of tangents per chunk, each filled by the
+  // thread that evaluates the chunk: the layout does not depend on the
+  // threads.
+  records_.assign(n_chunks, std::vector<double>());
+  tangent_blocks_.assign(want_tangent_ ? n_chunks : 0, std::vector<double>());
   Item* items = items_.data();
   std::atomic<bool> thrown{false};  // no exception may leave a parallel region
 #ifdef B2B_HAVE_OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(nt()) if (n >= kParallelPairs)
+#pragma omp parallel num_threads(nt()) if (n >= kParallelPairs)
 #endif
-  for (int c = 0; c < n_chunks; ++c) {
-    if (thrown.load(std::memory_order_relaxed)) continue;
-    try {
-      double K[pair::kNdof * pair::kNdof];
-      const int end = std::min(n, (c + 1) * kChunk);
-      for (int k = c * kChunk; k < end; ++k) {
-        evaluate(items[k], want_tangent_ ? K : nullptr);
-        if (want_tangent_ && items[k].res.contact_status == B2B_CONTACT_ACTIVE) {
-          items[k].tangent = static_cast<int64_t>(parts[c].size());
-          parts[c].insert(parts[c].end(), K, K + pair::kNdof * pair::kNdof);
+  {
+    // A thread's buffers, reused from chunk to chunk; a chunk's records and
+    // tangents are copied out of them at their exact size.
+    std::vector<double> recs, Ks, line_hist;
+    pair::PairResult res;
+    double K[pair::kNdof * pair::kNdof];
+    int64_t rec_at[kChunk], K_at[kChunk];
+#ifdef B2B_HAVE_OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+    for (int c = 0; c < n_chunks; ++c) {
+      if (thrown.load(std::memory_order_relaxed)) continue;
+      try {
+        const int begin = c * kChunk, end = std::min(n, begin + kChunk);
+        recs.clear();
+        Ks.clear();
+        for (int k = begin; k < end; ++k) {
+          evaluate(items[k], res, line_hist, want_tangent_ ? K : nullptr);
+          rec_at[k - begin] = settle(items[k], res, line_hist, recs);
+          K_at[k - begin] = -1;
+          if (want_tangent_ && items[k].status == B2B_CONTACT_ACTIVE) {
+            K_at[k - begin] = static_cast<int64_t>(Ks.size());
+            Ks.insert(Ks.end(), K, K + pair::kNdof * pair::kNdof);
+          }
         }
+        if (!recs.empty()) records_[c].assign(recs.begin(), recs.end());
+        if (!Ks.empty()) tangent_blocks_[c].assign(Ks.begin(), Ks.end());
+        for (int k = begin; k < end; ++k) {
+          if (rec_at[k - begin] >= 0) items[k].rec = records_[c].data() + rec_at[k - begin];
+          if (K_at[k - begin] >= 0) items[k].tangent = tangent_blocks_[c].data() + K_at[k - begin];
+        }
+      } catch (...) {
+        thrown = true;
       }
-    } catch (...) {
-      thrown = true;
     }
   }
   if (thrown) throw std::bad_alloc();
-  for (int c = 0; c < n_chunks && want_tangent_; ++c) {
-    const int64_t base = static_cast<int64_t>(tangents_.size());
-    tangents_.insert(tangents_.end(), parts[c].begin(), parts[c].end());
-    const int end = std::min(n, (c + 1) * kChunk);
-    for (int k = c * kChunk; k < end; ++k)
-      if (items[k].tangent >= 0) items[k].tangent += base;
-  }
   for (const Item& it : items_)
-    if (it.res.overflow) return overflow(it);
+    if (it.overflow) return overflow(it);
   return Problem();
 }
 
@@ -532,39 +617,34 @@ Problem Updater::evaluate_all() {
 // tangents' layout does not depend on the threads.
 Problem Updater::crossed_pairs() {
   if (!has_committed_) return Problem();
-  for (size_t k = 0; k < items_.size(); ++k) {
-    Item& it = items_[k];
-    const int st = it.res.contact_status;
+  for (Item& it : items_) {
+    const int st = it.status;
     if (it.hist_old || (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN)) continue;
     if (m_.group_pairs_[it.gp].line) {
       if (Problem pb = crossed_line_pair(it); pb.status) return pb;
       continue;
     }
-    double d[3];
-    for (int i = 0; i < 3; ++i)
-      d[i] = it.res.info[B2B_INFO_POINT_A + i] - it.res.info[B2B_INFO_POINT_B + i];
+    const double* d = it.rec + kRecDiff;
     if (!may_have_crossed(motion_, it.a, it.b, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
       continue;
     const GroupPair& gp = m_.group_pairs_[it.gp];
     // Only pairs that moved this far need one (rare within Newton's
-    // iterations): allocated at the first, one slot per item.
-    if (synthetic_.empty()) synthetic_.assign(pair::kHistoryLengthMax * items_.size(), 0.0);
-    double* h = synthetic_.data() + pair::kHistoryLengthMax * k;
+    // iterations).
+    std::vector<double> h(pair::kHistoryLengthMax, 0.0);
     if (!committed_history(m_.table_.segment(it.a), m_.table_.segment(it.b),
                            m_.committed_coords_.data(), m_.used_index_,
-                           gp.params.max_iterations, h, gp.hist_len))
+                           gp.params.max_iterations, h.data(), gp.hist_len))
       continue;
-    const double* nc = h + pair::kHistNormal;
+    const double* nc = h.data() + pair::kHistNormal;
     if (d[0] * nc[0] + d[1] * nc[1] + d[2] * nc[2] >= 0.0) continue;  // same side
-    it.hist_old = h;
+    synthetic_.push_back(std::move(h));
+    it.hist_old = synthetic_.back().data();
+    pair::PairResult res;
+    std::vector<double> line_hist;
     double K[pair::kNdof * pair::kNdof];
-    evaluate(it, want_tangent_ ? K : nullptr);
-    it.tangent = -1;
-    if (want_tangent_ && it.res.contact_status == B2B_CONTACT_ACTIVE) {
-      it.tangent = static_cast<int64_t>(tangents_.size());
-      tangents_.insert(tangents_.end(), K, K + pair::kNdof * pair::kNdof);
-    }
-    if (it.res.overflow) return overflow(it);
+    evaluate(it, res, line_hist, want_tangent_ ? K : nullptr);
+    settle_alone(it, res, line_hist, want_tangent_ ? K : nullptr);
+    if (it.overflow) return overflow(it);
   }
   return Problem();
 }
@@ -576,27 +656,25 @@ Problem Updater::crossed_pairs() {
 // (sign tracking). The same side: the same result as without it.
 Problem Updater::crossed_line_pair(Item& it) {
   const GroupPair& gp = m_.group_pairs_[it.gp];
-  const double rho = it.res.info[B2B_INFO_GAP] + m_.table_.segment(it.a).radius +
+  const double rho = it.rec[kRecGap] + m_.table_.segment(it.a).radius +
                      m_.table_.segment(it.b).radius;
   if (!may_have_crossed(motion_, it.a, it.b, rho)) return Problem();
   const int hl = gp.hist_len;
-  const int n = static_cast<int>(it.line_hist.size()) / hl - 1;
-  std::vector<double> h(it.line_hist.size());
+  const int n = it.hist_len / hl - 1;
+  std::vector<double> h(it.hist_len);
   if (!committed_line_histories(m_.table_.segment(it.a), m_.table_.segment(it.b),
                                 m_.committed_coords_.data(), m_.used_index_,
                                 gp.params.max_iterations, n, hl, h.data()))
     return Problem();
-  synthetic_line_.push_back(std::move(h));
-  it.hist_old = synthetic_line_.back().data();
-  it.hist_old_len = static_cast<int>(synthetic_line_.back().size());
+  synthetic_.push_back(std::move(h));
+  it.hist_old = synthetic_.back().data();
+  it.hist_old_len = static_cast<int>(synthetic_.back().size());
+  pair::PairResult res;
+  std::vector<double> line_hist;
   double K[pair::kNdof * pair::kNdof];
-  evaluate(it, want_tangent_ ? K : nullptr);
-  it.tangent = -1;
-  if (want_tangent_ && it.res.contact_status == B2B_CONTACT_ACTIVE) {
-    it.tangent = static_cast<int64_t>(tangents_.size());
-    tangents_.insert(tangents_.end(), K, K + pair::kNdof * pair::kNdof);
-  }
-  if (it.res.overflow) return overflow(it);
+  evaluate(it, res, line_hist, want_tangent_ ? K : nullptr);
+  settle_alone(it, res, line_hist, want_tangent_ ? K : nullptr);
+  if (it.overflow) return overflow(it);
   return Problem();
 }
 
@@ -605,23 +683,25 @@ Problem Updater::handovers() {
   std::vector<uint64_t> claimed;  // targets a handover has taken in this update
   auto find_item = [this](uint64_t key) -> Item* {
     auto it = std::lower_bound(items_.begin(), items_.end(), key,
-                               [](const Item& i, uint64_t k) { return i.key < k; });
-    return (it != items_.end() && it->key == key) ? &*it : nullptr;
+                               [](const Item& i, uint64_t k) { return i.key() < k; });
+    return (it != items_.end() && it->key() == key) ? &*it : nullptr;
   };
   const size_t n_sorted = items_.size();  // items_[0, n_sorted) stay sorted; new ones follow
   std::vector<Item> added;
+  std::vector<double> line_hist;  // unused: line pairs are not handed over
   for (const StoredPair& sp : committed.pairs) {
     if (sp.status != B2B_CONTACT_ACTIVE) continue;
     // A line pair's points are handed over point by point when the pair of
     // B's next segment is evaluated (take_over_points).
     if (m_.group_pairs_[sp.group_pair].line) continue;
     const Item* own = find_item(sp.key);
-    if (!own || own->res.contact_status != B2B_CONTACT_OUTSIDE) continue;
+    if (!own || own->status != B2B_CONTACT_OUTSIDE) continue;
     const GroupPair& gp = m_.group_pairs_[sp.group_pair];
     double hist[pair::kHistoryLengthMax];
     std::memcpy(hist, committed.history(sp), gp.hist_len * sizeof(double));
     int a = sp.a, b = sp.b, hops = 0;
-    double xi = own->res.info[B2B_INFO_XI], eta = own->res.info[B2B_INFO_ETA];
+    // (Its record has them: it was evaluated with its committed history.)
+    double xi = own->rec[kRecXi], eta = own->rec[kRecEta];
     bool found = false;
     while (true) {
       const int da = exit_direction(xi), db = exit_direction(eta);
@@ -650,21 +730,18 @@ Problem Updater::handovers() {
         if (slot_[s] < 0)
           if (Problem pb = build_one(s); pb.status) return pb;
       Item trial;
-      trial.key = key;
       trial.a = a;
       trial.b = b;
       trial.gp = sp.group_pair;
       trial.hist_old = hist;
+      pair::PairResult res;
       double K[pair::kNdof * pair::kNdof];
-      evaluate(trial, want_tangent_ ? K : nullptr);
-      if (trial.res.overflow) return overflow(trial);
-      const int st = trial.res.contact_status;
+      evaluate(trial, res, line_hist, want_tangent_ ? K : nullptr);
+      if (res.overflow) return overflow(trial);
+      const int st = res.contact_status;
       if (st == B2B_CONTACT_ACTIVE || st == B2B_CONTACT_OPEN) {
         trial.hist_old = nullptr;  // the handed-over history lives only here
-        if (want_tangent_ && st == B2B_CONTACT_ACTIVE) {
-          trial.tangent = static_cast<int64_t>(tangents_.size());
-          tangents_.insert(tangents_.end(), K, K + pair::kNdof * pair::kNdof);
-        }
+        settle_alone(trial, res, line_hist, want_tangent_ ? K : nullptr);
         claimed.push_back(key);
         if (Item* existing = find_item(key); existing && existing - items_.data() < static_cast<std::ptrdiff_t>(n_sorted))
           *existing = trial;
@@ -674,14 +751,14 @@ Problem Updater::handovers() {
         break;
       }
       if (st != B2B_CONTACT_OUTSIDE) break;
-      xi = trial.res.info[B2B_INFO_XI];
-      eta = trial.res.info[B2B_INFO_ETA];
+      xi = res.info[B2B_INFO_XI];
+      eta = res.info[B2B_INFO_ETA];
     }
     hops_ += hops;
     if (!found) ++lost_;
   }
   if (!added.empty()) {  // merged in key order (the rest is sorted already)
-    const auto by_key = [](const Item& x, const Item& y) { return x.key < y.key; };
+    const auto by_key = [](const Item& x, const Item& y) { return x.key() < y.key(); };
     std::sort(added.begin(), added.end(), by_key);
     const size_t n_sorted_items = items_.size();
     items_.insert(items_.end(), added.begin(), added.end());
@@ -698,14 +775,25 @@ void Updater::finish() {
   int counts[16] = {0};
   double totals[8] = {0};
   double min_gap = HUGE_VAL;
+  // Sized first: the trial state and the contacts are allocated once, at
+  // their size (a vector grown by doubling holds up to twice that).
+  size_t n_kept = 0, n_hist = 0, n_active = 0;
+  for (const Item& it : items_)
+    if (it.status == B2B_CONTACT_ACTIVE || it.status == B2B_CONTACT_OPEN) {
+      ++n_kept;
+      n_hist += static_cast<size_t>(it.hist_len);
+      n_active += it.status == B2B_CONTACT_ACTIVE;
+    }
+  trial.pairs.reserve(n_kept);
+  trial.hist.reserve(n_hist);
+  contacts.reserve(n_active);
   for (const Item& it : items_) {
-    const pair::PairResult& r = it.res;
-    const int st = r.contact_status;
+    const int st = it.status;
     switch (st) {
       case B2B_CONTACT_ACTIVE:
         ++counts[B2B_COUNT_ACTIVE];
         // The axes passed through each other (signed gap below -(r_A + r_B)).
-        if (r.info[B2B_INFO_GAP] <
+        if (it.rec[kRecGap] <
             -(m.table_.segment(it.a).radius + m.table_.segment(it.b).radius))
           ++counts[B2B_COUNT_CROSSED];
         break;
@@ -716,30 +804,31 @@ void Updater::finish() {
       default: ++counts[B2B_COUNT_NO_NORMAL]; break;
     }
     if (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN) continue;
-    min_gap = std::min(min_gap, r.info[B2B_INFO_GAP]);
+    min_gap = std::min(min_gap, it.rec[kRecGap]);
     const GroupPair& gp = m.group_pairs_[it.gp];
-    const double* h = gp.line ? it.line_hist.data() : r.history;
-    const int len = gp.line ? static_cast<int>(it.line_hist.size()) : gp.hist_len;
-    trial.pairs.push_back(StoredPair{it.key, it.a, it.b, st, it.gp, trial.hist.size(), len});
+    const double* h = it.rec + kRecHistory;
+    const int len = it.hist_len;
+    trial.pairs.push_back(StoredPair{it.key(), it.a, it.b, st, it.gp, trial.hist.size(), len});
     trial.hist.insert(trial.hist.end(), h, h + len);
     if (st != B2B_CONTACT_ACTIVE) continue;
+    const double* info = record_info(it.rec, len);
     if (gp.line) {
       ++counts[B2B_COUNT_LINE];
-      totals[B2B_TOTAL_LINE_POINTS] += r.info[B2B_INFO_LINE_POINTS];
+      totals[B2B_TOTAL_LINE_POINTS] += info[B2B_INFO_LINE_POINTS];
     }
     Contact c;
     c.a = it.a;
     c.b = it.b;
     std::memcpy(c.nodes, m.table_.segment(it.a).nodes, sizeof(int) * 4);
     std::memcpy(c.nodes + 4, m.table_.segment(it.b).nodes, sizeof(int) * 4);
-    std::memcpy(c.info, r.info, sizeof c.info);
-    std::memcpy(c.residual, r.residual, sizeof c.residual);
+    std::memcpy(c.info, info, sizeof c.info);
+    std::memcpy(c.residual, record_residual(it.rec, len), sizeof c.residual);
     c.tangent = it.tangent;
     contacts.push_back(c);
-    totals[B2B_TOTAL_ENERGY] += r.info[B2B_INFO_ENERGY];
-    totals[B2B_TOTAL_DISSIPATION_STEP] += r.info[B2B_INFO_DISSIPATION];
-    totals[B2B_TOTAL_NORMAL_FORCE] += r.info[B2B_INFO_NORMAL_FORCE];
-    const int friction_state = static_cast<int>(r.info[B2B_INFO_FRICTION_STATE]);
+    totals[B2B_TOTAL_ENERGY] += info[B2B_INFO_ENERGY];
+    totals[B2B_TOTAL_DISSIPATION_STEP] += info[B2B_INFO_DISSIPATION];
+    totals[B2B_TOTAL_NORMAL_FORCE] += info[B2B_INFO_NORMAL_FORCE];
+    const int friction_state = static_cast<int>(info[B2B_INFO_FRICTION_STATE]);
     if (friction_state == B2B_FRICTION_STICK) ++counts[B2B_COUNT_STICK];
     if (friction_state == B2B_FRICTION_SLIP) ++counts[B2B_COUNT_SLIP];
   }
@@ -751,6 +840,13 @@ void Updater::finish() {
 
   std::vector<double> build_coords;  // allocated before the model changes
   if (rebuilt_) build_coords = cur_;
+  // The tangent blocks the contacts point into (the empty ones left out).
+  std::vector<std::vector<double>> tangents;
+  tangents.reserve(static_cast<size_t>(
+      std::count_if(tangent_blocks_.begin(), tangent_blocks_.end(),
+                    [](const std::vector<double>& b) { return !b.empty(); })));
+  for (std::vector<double>& b : tangent_blocks_)
+    if (!b.empty()) tangents.push_back(std::move(b));
   if (rebuilt_) {
     m.candidates_.swap(new_candidates_);
     m.build_coords_.swap(build_coords);
@@ -766,7 +862,7 @@ void Updater::finish() {
   std::memcpy(m.totals_, totals, sizeof totals);
   m.trial_ = std::move(trial);
   m.contacts_ = std::move(contacts);
-  m.tangents_ = std::move(tangents_);
+  m.tangents_ = std::move(tangents);
   m.current_coords_ = std::move(cur_);
   m.want_tangent_ = want_tangent_;
   m.updated_ = true;

@@ -1,0 +1,41 @@
+#include "pair_record.hpp"
+
+#include <cstring>
+
+#include <b2b/b2b.h>
+
+namespace b2b {
+namespace model {
+
+size_t record_length(int status, bool committed, int hist_len) {
+  switch (status) {
+    case B2B_CONTACT_ACTIVE: return kRecHistory + hist_len + pair::kInfoLength + pair::kNdof;
+    case B2B_CONTACT_OPEN: return kRecHistory + hist_len;
+    case B2B_CONTACT_OUTSIDE: return committed ? 2 : 0;
+    default: return 0;
+  }
+}
+
+void write_record(const pair::PairResult& res, bool committed, const double* hist, int hist_len,
+                  double* rec) {
+  const int st = res.contact_status;
+  if (st == B2B_CONTACT_OUTSIDE) {
+    if (committed) {
+      rec[kRecXi] = res.info[B2B_INFO_XI];
+      rec[kRecEta] = res.info[B2B_INFO_ETA];
+    }
+    return;
+  }
+  if (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN) return;
+  rec[kRecGap] = res.info[B2B_INFO_GAP];
+  for (int i = 0; i < 3; ++i)
+    rec[kRecDiff + i] = res.info[B2B_INFO_POINT_A + i] - res.info[B2B_INFO_POINT_B + i];
+  std::memcpy(rec + kRecHistory, hist, sizeof(double) * hist_len);
+  if (st != B2B_CONTACT_ACTIVE) return;
+  double* info = rec + kRecHistory + hist_len;
+  std::memcpy(info, res.info, sizeof res.info);
+  std::memcpy(info + pair::kInfoLength, res.residual, sizeof res.residual);
+}
+
+}  // namespace model
+}  // namespace b2b

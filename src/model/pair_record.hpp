@@ -1,0 +1,51 @@
+// What the contact model's update keeps of one evaluated pair beyond its
+// status (update.cpp). Of the pairs a bundle evaluates, more than 99% carry
+// no force (PARALLEL, OUTSIDE, OPEN): keeping the element's whole output for
+// each (info, residual, history: ~550 bytes) made the update's memory grow
+// with the pairs looked at, not with the contacts. A record holds only what
+// a later stage of the update reads, in doubles:
+//   ACTIVE   the gap, the difference of the closest points (A - B), the new
+//            history, the info and the residual (the contact's outputs)
+//   OPEN     the gap, the difference of the closest points, the new history
+//            (the trial state keeps it: the normal's sign is tracked)
+//   OUTSIDE  of a pair with a committed history: xi, eta (where the
+//            handover of its committed contact starts)
+//   others   no record
+// The gap and the difference are read by the crossing check and the
+// smallest gap; they are copied from the info, so every output made from a
+// record is bit for bit the element's.
+#pragma once
+
+#include <cstddef>
+
+#include "../pair/contact_element.hpp"
+
+namespace b2b {
+namespace model {
+
+enum RecordSlot : int {
+  kRecGap = 0,      // ACTIVE, OPEN
+  kRecDiff = 1,     // 3 entries: POINT_A - POINT_B
+  kRecHistory = 4,  // the new history (hist_len), then for ACTIVE info and residual
+  kRecXi = 0,       // OUTSIDE
+  kRecEta = 1
+};
+
+// Doubles of the record of a pair of this status (0: none); committed: it
+// was evaluated with a committed history; hist_len: of its new history.
+size_t record_length(int status, bool committed, int hist_len);
+
+// Writes the record of res (record_length doubles) to rec; hist: the new
+// history (res.history, or a line pair's histories).
+void write_record(const pair::PairResult& res, bool committed, const double* hist, int hist_len,
+                  double* rec);
+
+inline const double* record_info(const double* rec, int hist_len) {
+  return rec + kRecHistory + hist_len;
+}
+inline const double* record_residual(const double* rec, int hist_len) {
+  return record_info(rec, hist_len) + pair::kInfoLength;
+}
+
+}  // namespace model
+}  // namespace b2b
