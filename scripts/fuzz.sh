@@ -3,8 +3,9 @@
 # and runs them one after the other, on the seed corpora of
 # tests/fuzz/corpus/<target>/ (which also hold the reproducers of every
 # defect found: each is run first, so a regression fails at once):
-#   short            each target for 60 s (FUZZ_SECONDS overrides): the CI
-#                    step; exits 1 if any target crashes or breaks the
+#   short            each target for 60 s (FUZZ_SECONDS overrides), as many
+#                    at a time as there are cores (FUZZ_PARALLEL overrides):
+#                    the CI step; exits 1 if any target crashes or breaks the
 #                    contract (the input is kept in build-fuzz/artifacts/)
 #   long [seconds]   the long campaign, each target for `seconds` (default
 #                    900), growing its corpus in build-fuzz/corpus/long/
@@ -67,29 +68,50 @@ logs=build-fuzz/logs/$mode
 mkdir -p "$logs"
 declare -A execs times
 failed=()
-for t in "${targets[@]}"; do
-  corpus=build-fuzz/corpus/$mode/$t
-  artifacts=build-fuzz/artifacts/$t/
+# One target's run: its verdict, time and executions into $logs/$t.*, read
+# back below (the runs go on in parallel in short mode).
+run_target() {
+  local t=$1 corpus=build-fuzz/corpus/$mode/$1 artifacts=build-fuzz/artifacts/$1/ start=$SECONDS
   mkdir -p "$corpus" "$artifacts"
   # A short run starts from the seeds alone, so that CI results do not
   # depend on what an earlier run left behind.
   [ "$mode" = short ] && rm -rf "${corpus:?}"/*
   echo "fuzz: $t for $seconds s (log: $logs/$t.log)"
-  start=$SECONDS
   # -timeout: one input (a handful of calls) may take at most 60 s; the
   # targets bound each call's CPU time far more tightly themselves.
   # -rss_limit_mb: ASan's quarantine alone takes a few hundred MB.
   if ./build-fuzz/tests/fuzz/"$t" -max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 \
     -print_final_stats=1 -artifact_prefix="$artifacts" "$corpus" "tests/fuzz/corpus/$t" \
     >"$logs/$t.log" 2>&1; then
-    verdict=ok
+    echo ok >"$logs/$t.verdict"
   else
-    verdict="FAILED (see $logs/$t.log and $artifacts)"
+    echo "FAILED (see $logs/$t.log and $artifacts)" >"$logs/$t.verdict"
+  fi
+  echo $((SECONDS - start)) >"$logs/$t.time"
+}
+# Short runs (CI) go FUZZ_PARALLEL at a time, by default one per core: a
+# target is single-threaded, and max_total_time is wall time. The long
+# campaign runs them one after the other unless FUZZ_PARALLEL says otherwise.
+if [ "$mode" = short ]; then parallel=${FUZZ_PARALLEL:-$jobs}; else parallel=${FUZZ_PARALLEL:-1}; fi
+running=0
+for t in "${targets[@]}"; do
+  rm -f "$logs/$t.verdict" "$logs/$t.time"
+  run_target "$t" &
+  running=$((running + 1))
+  if ((running >= parallel)); then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait || true
+for t in "${targets[@]}"; do
+  verdict=$(cat "$logs/$t.verdict" 2>/dev/null || echo "FAILED (no verdict: the run did not finish)")
+  if [ "$verdict" != ok ]; then
     failed+=("$t")
     grep -E "CONTRACT VIOLATED|ERROR: (AddressSanitizer|UndefinedBehaviorSanitizer|libFuzzer)|runtime error|^  |Test unit written" \
       "$logs/$t.log" | head -20 || true
   fi
-  times[$t]=$((SECONDS - start))
+  times[$t]=$(cat "$logs/$t.time" 2>/dev/null || echo "?")
   execs[$t]=$(sed -n 's/^stat::number_of_executed_units: *//p' "$logs/$t.log" | tail -1)
   echo "fuzz: $t: ${execs[$t]:-?} executions in ${times[$t]} s: $verdict"
 done
