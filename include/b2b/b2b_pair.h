@@ -249,9 +249,14 @@
  * rule.
  * Friction: each integration point has its own history and the point
  * element's return mapping, with "line_tangential_penalty"; its anchor on
- * A is xi_i itself (a material point of A), on B its committed eta. A
- * force per unit length, integrated like the normal one; the dissipation
- * likewise. Handover of a point's history to B's next segment is
+ * A is xi_i itself (a material point of A), on B its committed eta, read
+ * at B's surface: g_T = (I - n n^T)(x_A(xi_i) - x_B(eta_n) - r_B m), m the
+ * committed normal made normal to B's current tangent at eta_n (unit), so
+ * that a point sliding round B's axis (a rope round a beam) slips by the
+ * surface's arc; a rigid rotation of both beams by phi within a step reads
+ * as a slip below r_B phi^2, and a rotation of B about its own axis as a
+ * slip of r_B times its angle (an axis-based beam has no such rotation). A force per unit length,
+ * integrated like the normal one; the dissipation likewise. Handover of a point's history to B's next segment is
  * b2b_pair_history_handover on its slot (beam 1).
  * Every angle ("contact_type" ALL_ANGLE): with s = sin^2 of the crossing
  * angle and s1, s2 those of "line_angle" and "point_angle", the point

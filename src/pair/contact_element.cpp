@@ -93,7 +93,7 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   const FrictionContact fc{&sa,       &sb,      k.xi,     k.eta,        k.pa.xd,
                            k.pa.xdd,  k.pb.xd,  k.n,      k.rho_signed, law.force,
                            law.slope, k.pb.xdd, k.end_a,  k.end_b,
-                           k.held_a || k.held_b};
+                           k.held_a || k.held_b, ends.at_point ? B.radius : 0.0};
   FrictionResult fr;
   if (friction) {
     fr = friction_force(params, fc, hist_old);

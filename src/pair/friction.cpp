@@ -82,6 +82,29 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   c.sa->point_from(origin, fr.xi_n, xa, nullptr, nullptr);
   c.sb->point_from(origin, fr.eta_n, xb, nullptr, nullptr);
   for (int i = 0; i < 3; ++i) fr.anchor_gap[i] = xa[i] - xb[i];
+  if (c.surface_b > 0.0) {
+    // A point sliding round B's axis keeps its distance to the axis point:
+    // read the slip at B's surface, r_B m off the axis (FrictionContact).
+    // Where n_n lies along B's tangent (|p| below 1e-8) there is no surface
+    // direction to read it at, and the axis point serves.
+    double t[3], pv[3];
+    c.sb->point(fr.eta_n, nullptr, t, nullptr);
+    fr.surface_speed = norm3(t);
+    const double* nn = hist_old + kHistNormal;
+    for (int i = 0; i < 3; ++i) {
+      fr.surface_t[i] = t[i] / fr.surface_speed;
+      fr.surface_nn[i] = nn[i];
+    }
+    fr.surface_tnn = dot3(fr.surface_t, nn);
+    for (int i = 0; i < 3; ++i) pv[i] = nn[i] - fr.surface_tnn * fr.surface_t[i];
+    fr.surface_pn = norm3(pv);
+    fr.surface = fr.surface_pn > 1e-8;
+    if (fr.surface)
+      for (int i = 0; i < 3; ++i) {
+        fr.surface_m[i] = pv[i] / fr.surface_pn;
+        fr.anchor_gap[i] -= c.surface_b * fr.surface_m[i];
+      }
+  }
   // g_T = (I - n n^T)(x_A(xi_n) - x_B(eta_n)); T_trial = T_n + eps_T g_T
   const double nd = dot3(c.n, fr.anchor_gap);
   const double eps = p.tangential_penalty;
@@ -113,9 +136,9 @@ void add_friction_tangent(const Params& p, const FrictionContact& c, const Frict
                           const Linearization& lin, const double* PAd, const double* PBd,
                           double* Kc) {
   if (!fr.anchored) return;  // T = 0 near this configuration
-  double PAn[36], PBn[36], scratch[36];
+  double PAn[36], PBn[36], PBnd[36], scratch[36];
   c.sa->jacobians(fr.xi_n, PAn, scratch);
-  c.sb->jacobians(fr.eta_n, PBn, scratch);
+  c.sb->jacobians(fr.eta_n, PBn, PBnd);
   const double* n = c.n;
   const double eps = p.tangential_penalty;
   const double nd = dot3(n, fr.anchor_gap);
@@ -165,6 +188,20 @@ void add_friction_tangent(const Params& p, const FrictionContact& c, const Frict
     // dg_T = (I - n n^T) J_n - (n . d_n) dn - n (d_n . dn), J_n = [P_A(xi_n), -P_B(eta_n)]
     double jn[3], dgt[3];
     for (int i = 0; i < 3; ++i) jn[i] = on_a ? PAn[3 * cc + i] : -PBn[3 * cc + i];
+    if (fr.surface && !on_a) {
+      // - r_B dm: dt = (I - t t^T) dx_B,eta(eta_n) / |x_B,eta|,
+      // dp = -(dt (t.n_n) + t (dt.n_n)), dm = (I - m m^T) dp / |p|
+      const double* pd = PBnd + 3 * cc;
+      const double* t = fr.surface_t;
+      const double tp = dot3(t, pd);
+      double dt[3], dp[3];
+      for (int i = 0; i < 3; ++i) dt[i] = (pd[i] - tp * t[i]) / fr.surface_speed;
+      const double dtn = dot3(dt, fr.surface_nn);
+      for (int i = 0; i < 3; ++i) dp[i] = -(dt[i] * fr.surface_tnn + t[i] * dtn);
+      const double mdp = dot3(fr.surface_m, dp);
+      for (int i = 0; i < 3; ++i)
+        jn[i] -= c.surface_b * (dp[i] - mdp * fr.surface_m[i]) / fr.surface_pn;
+    }
     const double njn = dot3(n, jn), ddn = dot3(fr.anchor_gap, dn);
     for (int i = 0; i < 3; ++i) dgt[i] = jn[i] - njn * n[i] - nd * dn[i] - ddn * n[i];
     double dtr[3];

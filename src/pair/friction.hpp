@@ -30,6 +30,11 @@ struct FrictionContact {
   // Any parameter held (an end contact or a line-contact point): the
   // frame is then projected (see friction.cpp).
   bool held = false;
+  // > 0 (B's radius, for a line-contact point): the slip is read at B's
+  // surface (doc/line-contact.md section 5): the anchor on B is its
+  // committed axis point plus r_B m, m the committed normal made normal to
+  // B's current tangent there, so that a point sliding round B's axis slips.
+  double surface_b = 0.0;
 };
 
 enum FrameSource { kFrameA = 0, kFrameB = 1, kFrameAxis = 2 };
@@ -52,7 +57,13 @@ struct FrictionResult {
   double frame_norm = 0.0;  // |(I - n n^T) t| (speed_a where not projected)
   double committed_e1 = 0.0, committed_e2 = 0.0;  // committed force in the frame
   double xi_n = 0.0, eta_n = 0.0;
-  double anchor_gap[3] = {0, 0, 0};  // x_A(xi_n) - x_B(eta_n)
+  double anchor_gap[3] = {0, 0, 0};  // x_A(xi_n) - x_B(eta_n) (- r_B m, surface)
+  // the surface anchor (FrictionContact::surface_b): m = p / |p|,
+  // p = (I - t t^T) n_n, t the unit tangent of B at eta_n, n_n the
+  // committed normal; kept for the tangent
+  bool surface = false;
+  double surface_m[3] = {0, 0, 0}, surface_t[3] = {0, 0, 0}, surface_nn[3] = {0, 0, 0};
+  double surface_speed = 0.0, surface_pn = 0.0, surface_tnn = 0.0;
   double trial[3] = {0, 0, 0}, trial_norm = 0.0;
 };
 

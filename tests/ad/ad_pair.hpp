@@ -951,6 +951,21 @@ int evaluate(const Settings& st, const SegmentSpec* spec, const double* X, const
       point(sA, hist_old[kXi], xan, (S*)nullptr, (S*)nullptr);
       point(sB, hist_old[kEta], xbn, (S*)nullptr, (S*)nullptr);
       for (int i = 0; i < 3; ++i) dn[i] = xan[i] - xbn[i];
+      if (hold.line) {
+        // a line point's slip is read at B's surface (doc/line-contact.md 5):
+        // the anchor on B is r_B m off its axis point, m the committed normal
+        // made normal to B's current tangent at eta_n (unless that is
+        // degenerate, |(I - t t^T) n_n| <= 1e-8)
+        S xbt[3], tbn[3], pv[3];
+        point(sB, hist_old[kEta], xbt, tbn, (S*)nullptr);
+        const S tl = norm3(tbn);
+        S tn = 0.0;
+        for (int i = 0; i < 3; ++i) tn = tn + tbn[i] / tl * hist_old[kNormal + i];
+        for (int i = 0; i < 3; ++i) pv[i] = hist_old[kNormal + i] - tn * (tbn[i] / tl);
+        const S pl = norm3(pv);
+        if (dval(pl) > 1e-8)
+          for (int i = 0; i < 3; ++i) dn[i] = dn[i] - (radii[1] / s) * (pv[i] / pl);
+      }
       const S nd = dot3(n, dn);
       for (int i = 0; i < 3; ++i) {
         const S gt = s * (dn[i] - nd * n[i]);  // g_T in original units

@@ -19,6 +19,8 @@
  *   - the force is continuous in the crossing angle across both ends of the
  *     blending range (a sweep in 0.01 degree steps: no jump larger than the
  *     neighbouring increments allow);
+ *   - friction read at B's surface: a rope turned round B's axis slips by
+ *     r_B sin(delta); a rigid rotation of both beams slips to second order;
  *   - the "tangent" options: FD equals EXACT to 1e-6, SYMMETRIC is
  *     symmetric, MAIN is the main term (symmetric, differs from EXACT);
  *   - closed forms: parallel straight beams, force eps_L (r_A + r_B - d) L
@@ -465,6 +467,70 @@ START_TEST(joint_of_b_counted_once) {
 }
 END_TEST
 
+/* The slip is read at B's surface (doc/line-contact.md 5): A an arc round
+ * B's axis (a rope on a beam), turned about that axis by delta after a
+ * committed evaluation: every point slips by r_B sin(delta) tangentially,
+ * so in stick its force per length is eps_LT r_B sin(delta) (the axis slip
+ * would give 0); both beams turned rigidly about an axis across B by phi:
+ * a slip below r_B phi^2, of second order in phi. */
+static void arc_round_z(double rc, double turn, double X[24]) {
+  for (int k = 0; k < 4; ++k) {
+    const double a = 0.05 * (2 * k - 3) + turn;
+    X[3 * k] = rc * cos(a), X[3 * k + 1] = rc * sin(a), X[3 * k + 2] = 0.01 * k;
+    X[12 + 3 * k] = 0, X[12 + 3 * k + 1] = 0, X[12 + 3 * k + 2] = -1.0 + 0.6 * k;
+  }
+}
+
+START_TEST(slip_read_at_surface) {
+  b2b_params *p = line_params(B2B_LAW_LINEAR, B2B_CONTACT_TYPE_LINE, MU, B2B_TANGENT_EXACT);
+  tst_pair_spec s = {{B2B_CURVE_HERMITE_NODAL, B2B_CURVE_LINEAR},
+                     {B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR},
+                     {B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR},
+                     {RADIUS, 3 * RADIUS}};
+  const double rc = 4 * RADIUS - 0.01, delta = 1e-4;
+  double X[24], hist[MAXH];
+  static line_out o;
+  arc_round_z(rc, 0.0, X);
+  ck_assert_int_eq(eval_line(p, &s, X, 4, NULL, hist, &o, NULL), B2B_CONTACT_ACTIVE);
+  arc_round_z(rc, delta, X);
+  ck_assert_int_eq(eval_line(p, &s, X, 4, hist, NULL, &o, NULL), B2B_CONTACT_ACTIVE);
+  const double want = EPS_LT * 3 * RADIUS * sin(delta);
+  for (int i = 0; i < 4; ++i) {
+    const double *q = o.pinfo + 32 * i, *T = q + B2B_INFO_TANGENTIAL_FORCE;
+    ck_assert_msg(q[B2B_INFO_FRICTION_STATE] == B2B_FRICTION_STICK, "point %d not in stick", i);
+    const double t = sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
+    ck_assert_msg(fabs(t - want) <= 1e-6 * want, "point %d: |T| %.10g, r_B sin(delta) eps %.10g", i,
+                  t, want);
+  }
+  /* both turned rigidly about x by phi: B's committed tangent is not kept
+   * (the history has room for the normal only), so m is the committed
+   * normal turned by the smallest rotation that takes the tangent guessed
+   * from it to B's current one: right to first order, a slip of second
+   * order in the step's rotation remains (doc/line-contact.md 5). */
+  double slip[2];
+  for (int r = 0; r < 2; ++r) {
+    const double phi = r ? 0.01 : 0.02, c = cos(phi), sn = sin(phi);
+    arc_round_z(rc, 0.0, X);
+    for (int k = 0; k < 8; ++k) {
+      double *x = X + 3 * k;
+      const double y = x[1], z = x[2];
+      x[1] = c * y - sn * z, x[2] = sn * y + c * z;
+    }
+    ck_assert_int_eq(eval_line(p, &s, X, 4, hist, NULL, &o, NULL), B2B_CONTACT_ACTIVE);
+    slip[r] = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      const double *T = o.pinfo + 32 * i + B2B_INFO_TANGENTIAL_FORCE;
+      slip[r] = fmax(slip[r], sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]) / EPS_LT);
+    }
+    ck_assert_msg(slip[r] <= 3 * RADIUS * phi * phi, "rigid rotation %g: slip %g above r_B phi^2",
+                  phi, slip[r]);
+  }
+  ck_assert_msg(slip[1] <= 0.3 * slip[0], "slip of a rigid rotation not of second order: %g, %g",
+                slip[0], slip[1]);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 START_TEST(line_points_rule) {
   b2b_params *p = line_params(B2B_LAW_LINEAR, B2B_CONTACT_TYPE_LINE, 0, B2B_TANGENT_EXACT);
   char msg[B2B_ERRMSG_LEN];
@@ -595,6 +661,7 @@ int main(void) {
   tcase_add_test(tc, force_continuous_in_angle);
   tcase_add_test(tc, tangent_options);
   tcase_add_test(tc, joint_of_b_counted_once);
+  tcase_add_test(tc, slip_read_at_surface);
   tcase_add_test(tc, line_points_rule);
   tcase_add_test(tc, bad_input);
   suite_add_tcase(s, tc);
