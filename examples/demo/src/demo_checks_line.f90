@@ -67,6 +67,7 @@ module demo_checks_line
   real(dp), save :: f_prev = -1.0_dp, angle_prev = -1.0_dp, angle_min = huge(1.0_dp), p_load = 0.0_dp
   real(dp), save :: f_min = huge(1.0_dp), f_max = 0.0_dp, line_angle = 5.0_dp, point_angle = 15.0_dp
   integer, save :: n_blend_down = 0, n_blend_up = 0, worst_step = 0
+  real(dp), save :: pen_prev = -1.0_dp, pen_jump_blend = 0.0_dp, pen_jump_all = 0.0_dp, pen_point = 0.0_dp
   logical, save :: coming_back = .false.
 
 contains
@@ -90,6 +91,7 @@ contains
     err_load = 0.0_dp; n_line_last = 0; n_points_last = 0
     f_prev = -1.0_dp; angle_prev = -1.0_dp; angle_min = huge(1.0_dp); p_load = 0.0_dp; f_min = huge(1.0_dp)
     f_max = 0.0_dp; n_blend_down = 0; n_blend_up = 0; worst_step = 0; coming_back = .false.
+    pen_prev = -1.0_dp; pen_jump_blend = 0.0_dp; pen_jump_all = 0.0_dp; pen_point = 0.0_dp
   end subroutine line_check_reset
 
   !> The worst relative error of the check so far and its verdict (for the trade table).
@@ -295,6 +297,7 @@ contains
           line_angle = contact_option(m, 'line_angle', 5.0_dp)
           point_angle = contact_option(m, 'point_angle', 15.0_dp)
           p_load = p_full
+          pen_point = p_full / m%contact%penalty
           if (.not. (p_load > 0.0_dp)) call fail('angle_sweep needs a load on beam_a')
         end if
         ang = chord_angle(m, ba, bb)
@@ -318,9 +321,20 @@ contains
             if (err > worst) worst_step = row%step
             worst = max(worst, err)
           end if
-          if (.not. quiet) write (*, '(4x,a,f8.3,a,es13.6,a,es9.2,a,i0,a,i0,a,i0,a,i0)') 'check: angle ', ang, &
-            '  sum f_N ', f_n, '  jump/P ', err, '  contacts ', snap%n, ' (line ', n_line, ', points ', n_pts, &
-            ')  iterations ', row%iterations
+          ! the deepest penetration (reported, not checked): its change per step
+          pen = 0.0_dp
+          do k = 1, snap%n
+            pen = max(pen, -snap%c(k)%info(B2B_IX_INFO_GAP))
+          end do
+          if (pen_prev >= 0.0_dp) then
+            pen_jump_all = max(pen_jump_all, abs(pen - pen_prev) / pen_point)
+            if (ang >= line_angle .and. ang <= point_angle .and. angle_prev >= line_angle .and. &
+                angle_prev <= point_angle) pen_jump_blend = max(pen_jump_blend, abs(pen - pen_prev) / pen_point)
+          end if
+          pen_prev = pen
+          if (.not. quiet) write (*, '(4x,a,f8.3,a,es13.6,a,es9.2,a,es10.3,a,i0,a,i0,a,i0,a,i0)') 'check: angle ', ang, &
+            '  sum f_N ', f_n, '  jump/P ', err, '  penetration ', pen, '  contacts ', snap%n, ' (line ', n_line, &
+            ', points ', n_pts, ')  iterations ', row%iterations
           if (err > tol) call fail('step ' // str(row%step) // ': the normal force jumps by more than tolerance * P')
           f_prev = f_n
           angle_prev = ang
@@ -369,6 +383,9 @@ contains
         write (*, '(a,es13.6,a,es13.6,a,es13.6,a,i0,a,f6.2,a,i0,a,i0)') '  sum f_N from ', f_min, ' to ', f_max, &
           ' (P = ', p_load, '); steps ', n_steps, ', iterations per step mean ', &
           real(iters_total, dp) / real(max(n_steps, 1), dp), ', max ', iters_max, ', cut-backs ', total_cut
+        write (*, '(a,es9.2,a,es9.2,a,es9.2,a)') '  deepest penetration (reported): largest change between steps ', &
+          pen_jump_blend, ' (both in the blending range), ', pen_jump_all, ' (anywhere), of P / penalty = ', &
+          pen_point, ' (the point contact''s)'
       end if
       if (n_blend_down == 0 .or. n_blend_up == 0) call fail('the sweep did not pass through the blending range ' &
                                                             // 'both ways')
