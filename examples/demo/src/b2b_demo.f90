@@ -1,7 +1,7 @@
 !> b2b_demo: solves one scene file.
 !>   b2b_demo scene.nml [output_dir]
 !> or prints the trade table (demo_trade; scene_dir default examples/demo/scenes):
-!>   b2b_demo --trade-table [short|full] [scene_dir [output_dir]]
+!>   b2b_demo --trade-table [short|full|line] [scene_dir [output_dir]]
 !> Prints one line per load step, writes VTK and CSV files (demo_output) and
 !> exits with 0 only if every step converged and the scene's &check (if any)
 !> passed; a failed check exits with 1, any error with a message and 2.
@@ -16,7 +16,7 @@ program b2b_demo
   use b2b, only: b2b_version
   implicit none
   character(len=*), parameter :: usage = 'usage: b2b_demo scene.nml [output_dir]' // new_line('a') &
-    // '       b2b_demo --trade-table [short|full] [scene_dir [output_dir]]'
+    // '       b2b_demo --trade-table [short|full|line] [scene_dir [output_dir]]'
   type(scene_model) :: m
   character(len=1024) :: file, dir, mode, scene_dir
   integer :: major, minor, patch, i, j

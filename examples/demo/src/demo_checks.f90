@@ -56,6 +56,7 @@ module demo_checks
   use demo_history, only: step_row, rate_unmeasured
   use demo_contact_report, only: contact_snapshot
   use demo_errors, only: str
+  use demo_checks_line, only: line_check_step, line_check_finish
   implicit none
   private
   public :: check_step, check_finish
@@ -312,6 +313,9 @@ contains
             if (err > tol) call fail('T_out/T_in off the capstan formula by more than the tolerance')
           end if
         end if
+      case ('euler_eytelwein'); call line_check_step(m, row, snap, fint)
+      case ('line_load'); call line_check_step(m, row, snap, fint)
+      case ('angle_sweep'); call line_check_step(m, row, snap, fint)
       case ('many_contacts')
         if (row%step > 1 .and. snap%n < m%check%min_contacts) call fail('step ' // str(row%step) // ': ' &
             // str(snap%n) // ' active contacts, fewer than min_contacts')
@@ -394,6 +398,9 @@ contains
         ', handover hops ', total_hops, ', worst balance error ', worst
       if (total_hops < m%check%min_nodes_crossed) call fail('the contacts crossed ' // str(total_hops) &
           // ' nodes, fewer than min_nodes_crossed = ' // str(m%check%min_nodes_crossed))
+    case ('euler_eytelwein'); if (.not. line_check_finish(m)) ok = .false.
+    case ('line_load'); if (.not. line_check_finish(m)) ok = .false.
+    case ('angle_sweep'); if (.not. line_check_finish(m)) ok = .false.
     case ('capstan')
       if (n_corners < 0) call capstan_formula(m, m%check%beam_a)
       write (*, '(a,i0,a,f8.3,a,f5.3,a,f9.6,a,i0,a,f9.6,a,es9.2)') trim(m%name) // ': check capstan: n = ', &

@@ -8,6 +8,7 @@ module demo_scene_reader
   use demo_model, only: scene_model, name_len, max_ramp_points, option_model_real, option_model_int, &
                         option_params_real, option_params_int
   use demo_contact_hook, only: contact_hook_options
+  use demo_checks_line, only: line_check_kinds
   use b2b, only: b2b_model, b2b_params, b2b_model_create, b2b_model_destroy, b2b_params_create, b2b_params_destroy, &
                  B2B_CONTACT_TYPE_POINT, B2B_CONTACT_TYPE_LINE, B2B_CONTACT_TYPE_ALL_ANGLE
   use demo_nml_scan, only: nml_index, nml_scan, lower
@@ -791,9 +792,9 @@ contains
     if (ios /= 0) call read_failed('check', 1, ios, iomsg)
     kind = lower(kind)
     if (.not. in_list(kind, 'crossed_beams cantilever_crossbar sliding friction_pull many_contacts capstan ' &
-                      // 'reference')) &
+                      // 'reference ' // line_check_kinds)) &
       call bad('check', 1, 'kind', '''' // trim(kind) // ''' is not one of crossed_beams, cantilever_crossbar, ' &
-               // 'sliding, friction_pull, many_contacts, capstan, reference')
+               // 'sliding, friction_pull, many_contacts, capstan, reference, ' // line_check_kinds)
     if (kind == 'reference' .and. .not. reference > 0.0_dp) &
       call bad('check', 1, 'reference', 'kind ''reference'' needs reference > 0 (the final displacement)')
     if (.not. m%contact%enabled) call bad('check', 1, 'kind', 'a contact check needs a &contact group')

@@ -1,6 +1,6 @@
 !> The trade table: speed against accuracy on the large-sliding scenes.
 !>
-!>   b2b_demo --trade-table [short|full] [scene_dir [output_dir]]
+!>   b2b_demo --trade-table [short|full|line] [scene_dir [output_dir]]
 !>
 !> Runs the demo's own solver in this process on variants of the scenes
 !> sliding_hermite.nml (frictionless) and sliding_friction.nml (mu = 0.2)
@@ -28,7 +28,9 @@
 !>    are then not given); wall time of the run (reading, solving; no output).
 !>
 !> The short mode is a subset (mesh 40, penalty 1e6; the exact tangent for
-!> every curve kind, every tangent for hermite_nodal). The table is printed
+!> every curve kind, every tangent for hermite_nodal). The full mode adds
+!> the line-contact scenes (line_section: contact_type, curve kind,
+!> line_points, each with the scene's own check); mode 'line' runs only those. The table is printed
 !> as Markdown and written to output_dir/trade_table_<mode>.md.
 module demo_trade
   use demo_kinds, only: dp
@@ -39,7 +41,9 @@ module demo_trade
   use demo_output, only: output_prepare_dir
   use demo_errors, only: fatal, str
   use demo_nml_scan, only: lower
-  use b2b, only: b2b_version
+  use demo_model, only: option_params_int
+  use demo_checks_line, only: line_check_reset, line_check_finish, line_check_result
+  use b2b, only: b2b_version, B2B_CONTACT_TYPE_POINT, B2B_CONTACT_TYPE_LINE, B2B_CONTACT_TYPE_ALL_ANGLE
   use, intrinsic :: iso_fortran_env, only: int64, output_unit
   implicit none
   private
@@ -52,6 +56,13 @@ module demo_trade
   real(dp), parameter :: penalties(2) = [1.0e6_dp, 1.0e8_dp]
   character(len=*), parameter :: scenes(2) = [character(len=16) :: 'sliding_hermite', 'sliding_friction']
   character(len=*), parameter :: scene_what(2) = [character(len=40) :: 'frictionless', 'friction mu = 0.2']
+
+  ! the line-contact scenes (full mode): file (relative to scene_dir) and name
+  character(len=*), parameter :: line_scenes(5) = [character(len=48) :: '../tests/line_limits/capstan_cylinder_90', &
+    '../tests/line_limits/capstan_cylinder_180', '../tests/line_limits/capstan_cylinder_360', 'line_load', &
+    'angle_sweep']
+  character(len=*), parameter :: contact_types(3) = [character(len=9) :: 'point', 'line', 'all_angle']
+  integer, parameter :: line_point_counts(3) = [4, 8, 16]
 
   type :: run_result
     integer :: stopped = 0, n = 0, cutbacks = 0, it_max = 0, drag_from = 1
@@ -71,7 +82,8 @@ contains
     real(dp) :: total
     integer(int64) :: c0, c1, rate
 
-    if (mode /= 'short' .and. mode /= 'full') call fatal('--trade-table: mode ''' // mode // ''' is not short or full')
+    if (mode /= 'short' .and. mode /= 'full' .and. mode /= 'line') &
+      call fatal('--trade-table: mode ''' // mode // ''' is not short, full or line')
     passed = .true.
     call output_prepare_dir(out_dir, 'trade_table_' // mode, 'the output directory of --trade-table')
     call system_clock(c0, rate)
@@ -84,13 +96,15 @@ contains
     call emit(u, 'Machine: ' // cpu_model() // ', ' // str(cpu_count()) // ' logical CPUs; b2b ' // str(major) // '.' &
               // str(minor) // '.' // str(patch) // '; command: `b2b_demo --trade-table ' // mode // '`')
     call emit(u, '')
-    call emit(u, 'Slider pressed by P = 1000 into a clamped arc (R = 5, 100 degrees) and dragged up it (80 load steps). ' &
+    if (mode /= 'line') call emit(u, 'Slider pressed by P = 1000 into a clamped arc (R = 5, 100 degrees) and ' &
+              // 'dragged up it (80 load steps). ' &
               // 'Force error and f_N oscillation (of f_N - f_N,ref) relative to the reference''s largest f_N; ' &
               // 'reference: the same ' &
               // 'scene and penalty, arc of ' // str(ref_mesh) // ' elements, hermite_nodal, exact tangent. ' &
               // 'Iterations per load step (all attempts). A run that gives up after max_cutbacks shows the step.')
     n_runs = 0
     do s = 1, size(scenes)
+      if (mode == 'line') exit   ! the line-contact rows only
       file = trim(scene_dir) // '/' // trim(scenes(s)) // '.nml'
       do p = 1, size(penalties)
         if (mode == 'short' .and. p > 1) cycle
@@ -142,6 +156,7 @@ contains
         end do
       end do
     end do
+    if (mode == 'full' .or. mode == 'line') call line_section(u, scene_dir, out_dir, n_runs)
     call system_clock(c1)
     total = real(c1 - c0, dp) / real(rate, dp)
     call emit(u, '')
@@ -149,6 +164,149 @@ contains
     close (u)
     write (output_unit, '(a)') 'trade table written to ' // trim(md)
   end subroutine trade_table
+
+  !> The line-contact scenes (b2b_pair.h "Line contact"), each with its own
+  !> &check: the scene as it is, then with every contact_type (point, line,
+  !> all_angle), every curve kind, and line_points 4, 8, 16 (one change at a
+  !> time; a variant equal to the scene is not run twice). Per run the
+  !> check's verdict and worst error (demo_checks_line), the Newton
+  !> iterations per step, cut-backs, the step that stopped the run, and time.
+  subroutine line_section(u, scene_dir, out_dir, n_runs)
+    integer, intent(in) :: u
+    character(len=*), intent(in) :: scene_dir, out_dir
+    integer, intent(inout) :: n_runs
+    integer :: s, k
+    character(len=:), allocatable :: file, name, ct0, cv0
+    integer :: lp0
+    type(scene_model) :: m
+    call emit(u, '')
+    call emit(u, '### Line contact (contact_type, curve kind, integration points)')
+    call emit(u, '')
+    call emit(u, 'The line-contact scenes with their own &check (README, "Line contact scenes"): the scene as it is ' &
+              // '(first row), then one setting changed at a time. check error: the check''s worst relative error ' &
+              // '(euler_eytelwein: T_out/T_in against exp(mu theta) over the steps where the whole rope slides; ' &
+              // 'line_load: the penetration against q / line_penalty; angle_sweep: the largest change of sum f_N ' &
+              // 'between steps over P). The capstans on a cylinder fail with every setting: the library transmits ' &
+              // 'no friction round a straight beam''s axis (T_out/T_in = 1).')
+    call emit(u, '')
+    call emit(u, '| scene | contact_type | curve | line_points | check | check error | iter. mean | iter. max |' &
+              // ' cut-backs | stopped | time s |')
+    call emit(u, '|---|---|---|---:|---|---:|---:|---:|---:|---|---:|')
+    do s = 1, size(line_scenes)
+      file = trim(scene_dir) // '/' // trim(line_scenes(s)) // '.nml'
+      name = trim(line_scenes(s))
+      name = name(index(name, '/', back=.true.) + 1:)
+      call read_scene(file, m)
+      ct0 = contact_type_of(m)
+      cv0 = trim(m%contact%curve)
+      lp0 = nint(option_of(m, 'line_points'))
+      call line_row(u, file, name, ct0, cv0, lp0, out_dir, n_runs)
+      do k = 1, size(contact_types)
+        if (trim(contact_types(k)) /= ct0) call line_row(u, file, name, trim(contact_types(k)), cv0, lp0, out_dir, n_runs)
+      end do
+      do k = 1, size(curves)
+        if (trim(curves(k)) /= cv0) call line_row(u, file, name, ct0, trim(curves(k)), lp0, out_dir, n_runs)
+      end do
+      do k = 1, size(line_point_counts)
+        if (line_point_counts(k) /= lp0) call line_row(u, file, name, ct0, cv0, line_point_counts(k), out_dir, n_runs)
+      end do
+    end do
+  end subroutine line_section
+
+  !> One run of a line-contact scene with contact_type, curve and line_points set; one table row.
+  subroutine line_row(u, file, name, ctype, curve, points, out_dir, n_runs)
+    integer, intent(in) :: u, points
+    character(len=*), intent(in) :: file, name, ctype, curve, out_dir
+    integer, intent(inout) :: n_runs
+    type(scene_model) :: m
+    type(run_history) :: h
+    integer(int64) :: c0, c1, rate
+    integer :: stopped, n, checked, it_max, cuts
+    real(dp) :: time, err, it_mean
+    logical :: passed
+    character(len=:), allocatable :: verdict, err_text, points_text
+
+    call system_clock(c0, rate)
+    call read_scene(file, m)
+    m%contact%curve = curve
+    select case (ctype)
+    case ('line'); call set_option(m, 'contact_type', real(B2B_CONTACT_TYPE_LINE, dp))
+    case ('all_angle'); call set_option(m, 'contact_type', real(B2B_CONTACT_TYPE_ALL_ANGLE, dp))
+    case default; call set_option(m, 'contact_type', real(B2B_CONTACT_TYPE_POINT, dp))
+    end select
+    if (points > 0) call set_option(m, 'line_points', real(points, dp))
+    m%vtk = .false.
+    m%csv = .false.
+    m%out_dir = out_dir
+    call line_check_reset(.true.)
+    call solve_scene(m, quiet=.true., history=h, failed_step=stopped)
+    call system_clock(c1)
+    time = real(c1 - c0, dp) / real(rate, dp)
+    n_runs = n_runs + 1
+    n = h%n_steps
+    if (stopped > 0) then
+      verdict = '—'
+      err_text = '—'
+    else
+      passed = line_check_finish(m)
+      call line_check_result(err, passed, checked)
+      verdict = trim(merge('passed', 'FAILED', passed))
+      err_text = opt(es(err), checked > 0)
+    end if
+    it_mean = 0.0_dp
+    it_max = 0
+    cuts = 0
+    if (n > 0) then
+      it_mean = real(sum(h%steps(1:n)%iterations), dp) / real(n, dp)
+      it_max = maxval(h%steps(1:n)%iterations)
+      cuts = sum(h%steps(1:n)%cutbacks)
+    end if
+    if (stopped > 0) cuts = cuts + m%max_cutbacks
+    points_text = 'default'
+    if (points > 0) points_text = str(points)
+    call emit(u, '| ' // name // ' | ' // ctype // ' | ' // curve // ' | ' // points_text // ' | ' // verdict // ' | ' &
+              // err_text // ' | ' // opt(fx(it_mean), n > 0) // ' | ' // opt(str(it_max), n > 0) // ' | ' &
+              // str(cuts) // ' | ' // opt('step ' // str(stopped), stopped > 0) // ' | ' // fx(time) // ' |')
+  end subroutine line_row
+
+  !> The contact_type a scene sets (point if none).
+  function contact_type_of(m) result(s)
+    type(scene_model), intent(in) :: m
+    character(len=:), allocatable :: s
+    select case (nint(option_of(m, 'contact_type')))
+    case (B2B_CONTACT_TYPE_LINE); s = 'line'
+    case (B2B_CONTACT_TYPE_ALL_ANGLE); s = 'all_angle'
+    case default; s = 'point'
+    end select
+  end function contact_type_of
+
+  real(dp) function option_of(m, key) result(v)
+    type(scene_model), intent(in) :: m
+    character(len=*), intent(in) :: key
+    integer :: k
+    v = 0.0_dp
+    do k = 1, m%contact%n_options
+      if (trim(m%contact%option_key(k)) == key) v = m%contact%option_value(k)
+    end do
+  end function option_of
+
+  !> Sets (or adds) an integer option of the parameter set.
+  subroutine set_option(m, key, value)
+    type(scene_model), intent(inout) :: m
+    character(len=*), intent(in) :: key
+    real(dp), intent(in) :: value
+    integer :: k
+    do k = 1, m%contact%n_options
+      if (trim(m%contact%option_key(k)) == key) then
+        m%contact%option_value(k) = value
+        return
+      end if
+    end do
+    m%contact%n_options = m%contact%n_options + 1
+    m%contact%option_key(m%contact%n_options) = key
+    m%contact%option_kind(m%contact%n_options) = option_params_int
+    m%contact%option_value(m%contact%n_options) = value
+  end subroutine set_option
 
   subroutine emit(u, line)
     integer, intent(in) :: u
