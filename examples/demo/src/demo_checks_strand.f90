@@ -1,0 +1,196 @@
+!> The checks of the line-contact scenes (issue 18, item 5), called from
+!> demo_checks with one line per kind; the verdict joins the others'.
+!>
+!>  strand        a 1+n strand pressed radially: beam_a the centre wire,
+!>                every other beam an outer wire loaded towards the axis
+!>                of beam_a. Per outer wire k, C_k = the line contacts'
+!>                integrated normal force with the centre, S_k the mean
+!>                over its two neighbours. Closed form (equal outer wires
+!>                on a circle, n-fold symmetric; the centre held; one
+!>                penalty per unit length eps_L for every pair): the outer
+!>                wire moves in by u, the centre contact closes by u, the
+!>                neighbour contact by 2 u s, s = sin(pi/n); with the
+!>                initial overlaps d_C, d_S and the load F per wire,
+!>                    F = C + 2 s S,   C = eps_L L (d_C + u),
+!>                    S = eps_L L max(0, d_S + 2 s u),
+!>                so u = (F/(eps_L L) - d_C - 2 s d_S) / (1 + 4 s^2) while
+!>                the neighbours touch (else S = 0, C = F). Checked at
+!>                every step within tolerance: every C_k and S_k against
+!>                the closed form, and the resultant of the contact forces
+!>                on beam_a below tolerance * F.
+module demo_checks_strand
+  use demo_kinds, only: dp, pi
+  use demo_model, only: scene_model, external_force
+  use demo_history, only: step_row
+  use demo_contact_report, only: contact_snapshot
+  use demo_errors, only: str
+  implicit none
+  private
+  public :: strand_kind, strand_check_step, strand_check_finish
+
+  logical, save :: ok = .true.
+  integer, save :: n_checked = 0
+  real(dp), save :: worst_c = 0.0_dp, worst_s = 0.0_dp, worst_res = 0.0_dp, worst_spread = 0.0_dp
+  real(dp), save :: last_c = 0.0_dp, last_s = 0.0_dp, last_cf = 0.0_dp, last_sf = 0.0_dp, last_f = 0.0_dp
+
+contains
+
+  !> .true. for the kinds this module checks.
+  logical function strand_kind(kind)
+    character(len=*), intent(in) :: kind
+    strand_kind = any(trim(kind) == [character(len=16) :: 'strand', 'arc_slide', 'double_helix'])
+  end function strand_kind
+
+  subroutine fail(msg)
+    character(len=*), intent(in) :: msg
+    write (*, '(a)') '  CHECK FAILED: ' // msg
+    ok = .false.
+  end subroutine fail
+
+  !> The external force on beam b at load factor lam (vector sum).
+  function beam_load(m, b, lam) result(p)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: b
+    real(dp), intent(in) :: lam
+    real(dp) :: p(3), f(6, m%n_nodes)
+    integer :: node
+    f = external_force(m, lam)
+    p = 0.0_dp
+    do node = m%beam_first_node(b), m%beam_first_node(b) + m%beam_n_nodes(b) - 1
+      p = p + f(1:3, node)
+    end do
+  end function beam_load
+
+  !> Distance of point p from the line through q along unit vector e.
+  real(dp) function line_distance(p, q, e) result(d)
+    real(dp), intent(in) :: p(3), q(3), e(3)
+    real(dp) :: w(3)
+    w = p - q
+    d = norm2(w - dot_product(w, e) * e)
+  end function line_distance
+
+  !> The line-penalty of the scene's &contact (option line_penalty).
+  real(dp) function line_penalty(m) result(eps)
+    type(scene_model), intent(in) :: m
+    integer :: k
+    eps = 0.0_dp
+    do k = 1, m%contact%n_options
+      if (trim(m%contact%option_key(k)) == 'line_penalty') eps = m%contact%option_value(k)
+    end do
+  end function line_penalty
+
+  !> Called after every converged planned step (for the kinds of strand_kind).
+  subroutine strand_check_step(m, row, snap, fint)
+    type(scene_model), intent(in) :: m
+    type(step_row), intent(in) :: row
+    type(contact_snapshot), intent(in) :: snap
+    real(dp), intent(in) :: fint(:, :)
+    select case (trim(m%check%kind))
+    case ('strand'); call strand_step(m, row, snap)
+    end select
+    if (.false.) write (*, *) size(fint)
+  end subroutine strand_check_step
+
+  subroutine strand_step(m, row, snap)
+    type(scene_model), intent(in) :: m
+    type(step_row), intent(in) :: row
+    type(contact_snapshot), intent(in) :: snap
+    integer :: n_out, k, b, j, other, i
+    integer, allocatable :: outer(:)
+    real(dp), allocatable :: c(:), s(:)
+    real(dp) :: q(3), e(3), ring, f, eps, len, rc, ro, d_c, d_s, sn, u, c_cf, s_cf, res(3), sign_a, spread, err_c, err_s
+    real(dp) :: pk(3), pn(3)
+    associate (ba => m%check%beam_a, tol => m%check%tolerance)
+      n_out = m%n_beams - 1
+      outer = pack([(b, b = 1, m%n_beams)], [(b, b = 1, m%n_beams)] /= ba)
+      allocate (c(n_out), s(n_out))
+      ! the geometry of the initial configuration: axis of the centre wire,
+      ! ring radius of the outer wires (from their first nodes), radii
+      q = m%x0(:, m%beam_first_node(ba))
+      e = m%x0(:, m%beam_first_node(ba) + m%beam_n_nodes(ba) - 1) - q
+      len = norm2(e)
+      e = e / len
+      ring = line_distance(m%x0(:, m%beam_first_node(outer(1))), q, e)
+      rc = m%beam_radius(ba)
+      ro = m%beam_radius(outer(1))
+      sn = sin(pi / real(n_out, dp))
+      d_c = rc + ro - ring
+      d_s = 2.0_dp * ro - 2.0_dp * ring * sn
+      f = norm2(beam_load(m, outer(1), row%lam))
+      eps = line_penalty(m)
+      u = (f / (eps * len) - d_c - 2.0_dp * sn * d_s) / (1.0_dp + 4.0_dp * sn**2)
+      if (d_s + 2.0_dp * sn * u <= 0.0_dp) u = f / (eps * len) - d_c   ! the neighbours do not touch
+      c_cf = eps * len * (d_c + u)
+      s_cf = eps * len * max(0.0_dp, d_s + 2.0_dp * sn * u)
+      ! the model: per outer wire the force with the centre and with the neighbours
+      c = 0.0_dp
+      s = 0.0_dp
+      res = 0.0_dp
+      do i = 1, snap%n
+        associate (ct => snap%c(i))
+          if (ct%pair(1) == ba .or. ct%pair(3) == ba) then
+            other = merge(ct%pair(3), ct%pair(1), ct%pair(1) == ba)
+            sign_a = merge(1.0_dp, -1.0_dp, ct%pair(1) == ba)   ! the normal points from B to A
+            res = res + sign_a * ct%info(13) * ct%info(9:11)
+            do k = 1, n_out
+              if (outer(k) == other) c(k) = c(k) + ct%info(13)
+            end do
+          else
+            do k = 1, n_out
+              if (outer(k) == ct%pair(1) .or. outer(k) == ct%pair(3)) s(k) = s(k) + 0.5_dp * ct%info(13)
+            end do
+          end if
+        end associate
+      end do
+      ! outer wires must each have two neighbours for the mean (a ring)
+      do k = 1, n_out
+        pk = m%x0(:, m%beam_first_node(outer(k)))
+        j = 0
+        do b = 1, n_out
+          if (b == k) cycle
+          pn = m%x0(:, m%beam_first_node(outer(b)))
+          if (norm2(pk - pn) < 2.0_dp * ring * sn * (1.0_dp + 1.0e-6_dp)) j = j + 1
+        end do
+        if (j /= 2) call fail('outer wire (beam ' // str(outer(k)) // ') does not have two neighbours at the ring ' &
+                              // 'spacing: not a symmetric strand')
+      end do
+      n_checked = n_checked + 1
+      err_c = maxval(abs(c - c_cf)) / f
+      err_s = maxval(abs(s - s_cf)) / f
+      spread = (maxval(c) - minval(c)) / f
+      worst_c = max(worst_c, err_c)
+      worst_s = max(worst_s, err_s)
+      worst_spread = max(worst_spread, spread)
+      worst_res = max(worst_res, norm2(res) / f)
+      write (*, '(4x,a,es12.5,a,es12.5,a,es12.5,a,es12.5,a,es12.5,a,es12.5,a,es9.2,a,es9.2,a,es9.2)') 'check: load per wire ', f, &
+        '  centre contacts ', minval(c), ' .. ', maxval(c), '  closed form ', c_cf, '  neighbours ', sum(s) / n_out, &
+        '  closed form ', s_cf, '  rel. errors ', err_c, ', ', err_s, '  centre resultant / F ', norm2(res) / f
+      if (err_c > tol) call fail('step ' // str(row%step) // ': a centre contact force off the closed form')
+      if (err_s > tol) call fail('step ' // str(row%step) // ': a neighbour contact force off the closed form')
+      if (norm2(res) > tol * f) call fail('step ' // str(row%step) // ': the centre wire''s contact resultant ' &
+                                          // 'is not zero')
+      last_c = sum(c) / n_out
+      last_s = sum(s) / n_out
+      last_cf = c_cf
+      last_sf = s_cf
+      last_f = f
+    end associate
+  end subroutine strand_step
+
+  !> Prints the summary of the scene's check; .false. if any part failed.
+  logical function strand_check_finish(m) result(passed)
+    type(scene_model), intent(in) :: m
+    select case (trim(m%check%kind))
+    case ('strand')
+      if (n_checked == 0) call fail('no step checked')
+      write (*, '(a,es13.6,a,es13.6,a,es13.6,a,es13.6,a,es13.6,a)') trim(m%name) // ': check strand: load per wire ', &
+        last_f, ', centre contact ', last_c, ' (closed form ', last_cf, '), neighbour contact ', last_s, &
+        ' (closed form ', last_sf, ')'
+      write (*, '(a,i0,a,es9.2,a,es9.2,a,es9.2,a,es9.2,a,es9.2)') '  steps checked ', n_checked, &
+        ', worst rel. error centre ', worst_c, ', neighbours ', worst_s, ', spread of the six ', worst_spread, &
+        ', centre resultant / F ', worst_res, ', tolerance ', m%check%tolerance
+    end select
+    passed = ok
+  end function strand_check_finish
+
+end module demo_checks_strand
