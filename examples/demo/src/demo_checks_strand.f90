@@ -31,6 +31,9 @@ module demo_checks_strand
   logical, save :: ok = .true.
   integer, save :: n_checked = 0
   real(dp), save :: worst_c = 0.0_dp, worst_s = 0.0_dp, worst_res = 0.0_dp, worst_spread = 0.0_dp
+  ! arc_slide
+  integer, save :: n_line_steps = 0, n_point_steps = 0, total_cut = 0, max_lost = 0, min_active = huge(1)
+  real(dp), save :: worst_f = 0.0_dp, angle_min = huge(1.0_dp), angle_max = -huge(1.0_dp), first_f = 0.0_dp, first_cf = 0.0_dp
   real(dp), save :: last_c = 0.0_dp, last_s = 0.0_dp, last_cf = 0.0_dp, last_sf = 0.0_dp, last_f = 0.0_dp
 
 contains
@@ -72,12 +75,20 @@ contains
   !> The line-penalty of the scene's &contact (option line_penalty).
   real(dp) function line_penalty(m) result(eps)
     type(scene_model), intent(in) :: m
-    integer :: k
-    eps = 0.0_dp
-    do k = 1, m%contact%n_options
-      if (trim(m%contact%option_key(k)) == 'line_penalty') eps = m%contact%option_value(k)
-    end do
+    eps = option_real(m, 'line_penalty', 0.0_dp)
   end function line_penalty
+
+  !> A library option of the scene's &contact, or its default.
+  real(dp) function option_real(m, key, default) result(v)
+    type(scene_model), intent(in) :: m
+    character(len=*), intent(in) :: key
+    real(dp), intent(in) :: default
+    integer :: k
+    v = default
+    do k = 1, m%contact%n_options
+      if (trim(m%contact%option_key(k)) == key) v = m%contact%option_value(k)
+    end do
+  end function option_real
 
   !> Called after every converged planned step (for the kinds of strand_kind).
   subroutine strand_check_step(m, row, snap, fint)
@@ -87,6 +98,7 @@ contains
     real(dp), intent(in) :: fint(:, :)
     select case (trim(m%check%kind))
     case ('strand'); call strand_step(m, row, snap)
+    case ('arc_slide'); call arc_step(m, row, snap)
     end select
     if (.false.) write (*, *) size(fint)
   end subroutine strand_check_step
@@ -177,6 +189,108 @@ contains
     end associate
   end subroutine strand_step
 
+  !> The circle through the first, middle and last initial nodes of beam b.
+  subroutine beam_circle(m, b, c, r, a)
+    type(scene_model), intent(in) :: m
+    integer, intent(in) :: b
+    real(dp), intent(out) :: c(3), r, a(3)
+    real(dp) :: p1(3), p2(3), p3(3), u(3), v(3), w(3), uu, vv, uv
+    p1 = m%x0(:, m%beam_first_node(b))
+    p2 = m%x0(:, m%beam_first_node(b) + (m%beam_n_nodes(b) - 1) / 2)
+    p3 = m%x0(:, m%beam_first_node(b) + m%beam_n_nodes(b) - 1)
+    u = p2 - p1
+    v = p3 - p1
+    w = cross(u, v)
+    a = w / norm2(w)
+    uu = dot_product(u, u); vv = dot_product(v, v); uv = dot_product(u, v)
+    c = p1 + (uu * vv - vv * uv) / (2.0_dp * dot_product(w, w)) * u + (vv * uu - uu * uv) / (2.0_dp * dot_product(w, w)) * v
+    r = norm2(p1 - c)
+  end subroutine beam_circle
+
+  pure function cross(a, b) result(c)
+    real(dp), intent(in) :: a(3), b(3)
+    real(dp) :: c(3)
+    c = [a(2) * b(3) - a(3) * b(2), a(3) * b(1) - a(1) * b(3), a(1) * b(2) - a(2) * b(1)]
+  end function cross
+
+  !> arc_slide: beam_a, straight and horizontal (normal to its load P),
+  !> pressed onto the fixed circular arc beam_b (radius R in a plane
+  !> containing P, axis e_y, centre c) and moved over it. With X the
+  !> horizontal position of beam_a's middle node in the arc's plane, psi the
+  !> angle of beam_a to that plane, rho = r_a + r_b, the contact on the
+  !> arc at angle phi from the top solves
+  !>     X = R sin(phi) + rho tan(phi) / (sin(psi) sqrt(sin(psi)^2 + tan(phi)^2))
+  !> and the frictionless contact force balancing P is
+  !>     f_N = P sqrt(1 + tan(phi)^2 / sin(psi)^2)
+  !> (psi = 90 degrees: sin(phi) = X/(R + rho), f_N = P/cos(phi); psi -> 0:
+  !> phi -> 0, f_N -> P).
+  subroutine arc_step(m, row, snap)
+    type(scene_model), intent(in) :: m
+    type(step_row), intent(in) :: row
+    type(contact_snapshot), intent(in) :: snap
+    real(dp) :: c(3), rad, ey(3), ez(3), ex(3), p(3), pm(3), d(3), sp, x, rho, lo, hi, phi, g, f_cf, f_model, err, pl
+    integer :: k, it, n_line
+    associate (ba => m%check%beam_a, bb => m%check%beam_b, tol => m%check%tolerance)
+      call beam_circle(m, bb, c, rad, ey)
+      p = beam_load(m, ba, row%lam)
+      pl = norm2(p)
+      ez = -p / pl
+      ex = cross(ey, ez)
+      ex = ex / norm2(ex)
+      pm = m%x(:, m%beam_first_node(ba) + (m%beam_n_nodes(ba) - 1) / 2)
+      d = m%x(:, m%beam_first_node(ba) + m%beam_n_nodes(ba) - 1) - m%x(:, m%beam_first_node(ba))
+      d = d / norm2(d)
+      sp = abs(dot_product(d, ey))
+      x = dot_product(pm - c, ex)
+      rho = m%beam_radius(ba) + m%beam_radius(bb)
+      phi = 0.0_dp
+      f_cf = pl
+      if (sp > 1.0e-6_dp) then
+        lo = -1.5_dp
+        hi = 1.5_dp
+        do it = 1, 200
+          phi = 0.5_dp * (lo + hi)
+          g = rad * sin(phi) + rho * tan(phi) / (sp * sqrt(sp**2 + tan(phi)**2))
+          if (g > x) then
+            hi = phi
+          else
+            lo = phi
+          end if
+        end do
+        f_cf = pl * sqrt(1.0_dp + tan(phi)**2 / sp**2)
+      end if
+      f_model = 0.0_dp
+      do k = 1, snap%n
+        f_model = f_model + snap%c(k)%info(13)
+        angle_min = min(angle_min, snap%c(k)%info(15))
+        angle_max = max(angle_max, snap%c(k)%info(15))
+      end do
+      n_line = snap%counts(16)
+      ! the regime of the all-angle blend by the contacts' crossing angles
+      if (any(snap%c(1:snap%n)%info(15) <= option_real(m, 'line_angle', 5.0_dp))) n_line_steps = n_line_steps + 1
+      if (any(snap%c(1:snap%n)%info(15) >= option_real(m, 'point_angle', 15.0_dp))) n_point_steps = n_point_steps + 1
+      total_cut = total_cut + row%cutbacks
+      max_lost = max(max_lost, snap%counts(12))
+      min_active = min(min_active, snap%n)
+      err = abs(f_model - f_cf) / f_cf
+      worst_f = max(worst_f, err)
+      n_checked = n_checked + 1
+      if (n_checked == 1) then
+        first_f = f_model
+        first_cf = f_cf
+      end if
+      last_f = f_model
+      last_cf = f_cf
+      write (*, '(4x,a,f7.2,a,f8.4,a,f7.3,a,i0,a,i0,a,i0,a,es13.6,a,es13.6,a,es9.2)') 'check: psi ', &
+        asin(min(sp, 1.0_dp)) * 180.0_dp / pi, '  X ', x, '  phi ', phi * 180.0_dp / pi, '  contacts ', snap%n, &
+        ' (line ', n_line, ', lost ', snap%counts(12), ')  f_N ', f_model, '  closed form ', f_cf, '  rel. error ', err
+      if (err > tol) call fail('step ' // str(row%step) // ': contact force off the closed form')
+      if (snap%n == 0) call fail('step ' // str(row%step) // ': no active contact')
+      if (snap%counts(12) > 0) call fail('step ' // str(row%step) // ': B2B_COUNT_LOST = ' // str(snap%counts(12)))
+      if (row%cutbacks > 0) call fail('step ' // str(row%step) // ': ' // str(row%cutbacks) // ' cut-back(s)')
+    end associate
+  end subroutine arc_step
+
   !> Prints the summary of the scene's check; .false. if any part failed.
   logical function strand_check_finish(m) result(passed)
     type(scene_model), intent(in) :: m
@@ -189,6 +303,17 @@ contains
       write (*, '(a,i0,a,es9.2,a,es9.2,a,es9.2,a,es9.2,a,es9.2)') '  steps checked ', n_checked, &
         ', worst rel. error centre ', worst_c, ', neighbours ', worst_s, ', spread of the six ', worst_spread, &
         ', centre resultant / F ', worst_res, ', tolerance ', m%check%tolerance
+    case ('arc_slide')
+      if (n_checked == 0) call fail('no step checked')
+      write (*, '(a,es13.6,a,es13.6,a,es13.6,a,es13.6,a,es9.2,a,es9.2)') trim(m%name) // ': check arc_slide: f_N first ', &
+        first_f, ' (closed form ', first_cf, '), last ', last_f, ' (closed form ', last_cf, '); worst rel. error ', &
+        worst_f, ', tolerance ', m%check%tolerance
+      write (*, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,f6.2,a,f6.2,a)') '  steps ', n_checked, ', cut-backs ', total_cut, &
+        ', B2B_COUNT_LOST at most ', max_lost, ', steps with a contact below line_angle ', n_line_steps, ', above point_angle ', &
+        n_point_steps, ', crossing angles ', angle_min, ' .. ', angle_max, ' degrees'
+      if (n_line_steps == 0 .or. n_point_steps == 0) call fail('the motion did not pass from point contact ' &
+        // '(above point_angle) to line contact (below line_angle)')
+      if (min_active == 0) call fail('a step without contact')
     end select
     passed = ok
   end function strand_check_finish
