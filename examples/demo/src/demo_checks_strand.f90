@@ -31,6 +31,9 @@ module demo_checks_strand
   logical, save :: ok = .true.
   integer, save :: n_checked = 0
   real(dp), save :: worst_c = 0.0_dp, worst_s = 0.0_dp, worst_res = 0.0_dp, worst_spread = 0.0_dp
+  ! double_helix
+  real(dp), save :: last_bound = 0.0_dp, phi_prev = 0.0_dp, worst_ax = 0.0_dp, last_phi = 0.0_dp
+  real(dp), save :: last_u(3) = 0.0_dp, last_ucf(3) = 0.0_dp
   ! arc_slide
   integer, save :: n_line_steps = 0, n_point_steps = 0, total_cut = 0, max_lost = 0, min_active = huge(1)
   real(dp), save :: worst_f = 0.0_dp, angle_min = huge(1.0_dp), angle_max = -huge(1.0_dp), first_f = 0.0_dp, first_cf = 0.0_dp
@@ -99,6 +102,7 @@ contains
     select case (trim(m%check%kind))
     case ('strand'); call strand_step(m, row, snap)
     case ('arc_slide'); call arc_step(m, row, snap)
+    case ('double_helix'); call helix_step(m, row)
     end select
     if (.false.) write (*, *) size(fint)
   end subroutine strand_check_step
@@ -291,6 +295,82 @@ contains
     end associate
   end subroutine arc_step
 
+  !> double_helix: beam_a and beam_b, parallel and touching, their first
+  !> ends held, their last ends turned about the common axis by Phi (and
+  !> pulled along it by N each, free to move along it). If they stay in
+  !> contact along their length, both lie on a helix of radius
+  !> r_h = (r_a + r_b + g)/2 about the axis (g the gap of the contact law,
+  !> 0 .. regularization_gap: taken as half of it), turning by Phi over the
+  !> axial length h; arc length L_s = L (1 + N_t/EA) with N_t = N / cos(beta)
+  !> the tension along the rod, so h = sqrt(L_s^2 - (r_h Phi)^2). By the
+  !> symmetry of the pair (half-turn about the axis through the middle at
+  !> angle Phi/2), the middle node of beam_a lies at angle Phi/2, radius
+  !> r_h, axial position h/2: its displacement is
+  !>     u = (h - L)/2 e + r_h (cos(Phi/2) e_r + sin(Phi/2) e_t) - r_0 e_r.
+  !> Checked from a turn of 1 rad on (before, the contact pressure is too
+  !> small to hold the rods on the helix): |u - u_cf| <= tolerance |u_cf|
+  !> + regularization_gap/4, and the shortening by the twist (L_s - h)/2
+  !> within 2 sqrt(EI/N_t)/L (the bending boundary layers at the ends) +
+  !> regularization_gap/r_h (the gap's range in r_h^2).
+  subroutine helix_step(m, row)
+    type(scene_model), intent(in) :: m
+    type(step_row), intent(in) :: row
+    real(dp) :: q(3), e(3), er(3), et(3), len, rh, r0, w(3), phi, dphi, n_ax, ea, ls, h, cb, u(3), ucf(3), err, err_ax
+    real(dp) :: s_cf, s_mod, bound_ax
+    integer :: it, mid
+    associate (ba => m%check%beam_a, bb => m%check%beam_b, tol => m%check%tolerance)
+      q = 0.5_dp * (m%x0(:, m%beam_first_node(ba)) + m%x0(:, m%beam_first_node(bb)))
+      e = m%x0(:, m%beam_first_node(ba) + m%beam_n_nodes(ba) - 1) - m%x0(:, m%beam_first_node(ba))
+      len = norm2(e)
+      e = e / len
+      er = m%x0(:, m%beam_first_node(ba)) - q
+      er = er - dot_product(er, e) * e
+      r0 = norm2(er)
+      er = er / r0
+      et = cross(e, er)
+      rh = 0.5_dp * (m%beam_radius(ba) + m%beam_radius(bb) + 0.5_dp * m%contact%regularization_gap)
+      ! the turn of the last end, continued from the last step
+      w = m%x(:, m%beam_first_node(ba) + m%beam_n_nodes(ba) - 1) - q
+      phi = atan2(dot_product(w, et), dot_product(w, er))
+      dphi = modulo(phi - phi_prev + pi, 2.0_dp * pi) - pi
+      phi = phi_prev + dphi
+      phi_prev = phi
+      n_ax = dot_product(beam_load(m, ba, row%lam), e)
+      ea = m%el_stiff(1, m%beam_first_el(ba))
+      cb = 1.0_dp
+      do it = 1, 20
+        ls = len * (1.0_dp + n_ax / (ea * cb))
+        h = sqrt(ls**2 - (rh * phi)**2)
+        cb = h / ls
+      end do
+      ucf = 0.5_dp * (h - len) * e + rh * (cos(0.5_dp * phi) * er + sin(0.5_dp * phi) * et) - r0 * er
+      mid = m%beam_first_node(ba) + (m%beam_n_nodes(ba) - 1) / 2
+      u = m%x(:, mid) - m%x0(:, mid)
+      err = norm2(u - ucf) / norm2(ucf)
+      ! the shortening by the twist alone at the middle, (L_s - h)/2, model and closed form
+      s_cf = 0.5_dp * (ls - h)
+      s_mod = 0.5_dp * (ls - len) - dot_product(u, e)
+      err_ax = abs(s_mod - s_cf) / s_cf
+      ! its bound: bending boundary layers sqrt(EI/N_t) at both ends, and the gap's range in r_h^2
+      bound_ax = 2.0_dp * sqrt(m%el_stiff(3, m%beam_first_el(ba)) * cb / n_ax) / len &
+                 + m%contact%regularization_gap / rh
+      n_checked = n_checked + 1
+      if (abs(phi) >= 1.0_dp) worst_f = max(worst_f, err)
+      if (abs(phi) >= 1.0_dp) worst_ax = max(worst_ax, err_ax)
+      last_bound = bound_ax
+      last_u = u
+      last_ucf = ucf
+      last_phi = phi
+      write (*, '(4x,a,f9.3,a,3es13.5,a,3es13.5,a,es9.2,a,es10.3,a,es10.3,a,es9.2,a,es9.2)') 'check: turn ', &
+        phi * 180.0_dp / pi, ' deg  middle u ', u, '  closed form ', ucf, '  rel. error ', err, &
+        '  twist shortening ', s_mod, ' closed form ', s_cf, ' rel. error ', err_ax, ' bound ', bound_ax
+      if (abs(phi) >= 1.0_dp .and. norm2(u - ucf) > tol * norm2(ucf) + 0.25_dp * m%contact%regularization_gap) &
+        call fail('step ' // str(row%step) // ': the middle node off the helix by more than the tolerance')
+      if (abs(phi) >= 1.0_dp .and. err_ax > bound_ax) call fail('step ' // str(row%step) // ': the twist ' &
+          // 'shortening off the closed form by more than its bound')
+    end associate
+  end subroutine helix_step
+
   !> Prints the summary of the scene's check; .false. if any part failed.
   logical function strand_check_finish(m) result(passed)
     type(scene_model), intent(in) :: m
@@ -303,6 +383,13 @@ contains
       write (*, '(a,i0,a,es9.2,a,es9.2,a,es9.2,a,es9.2,a,es9.2)') '  steps checked ', n_checked, &
         ', worst rel. error centre ', worst_c, ', neighbours ', worst_s, ', spread of the six ', worst_spread, &
         ', centre resultant / F ', worst_res, ', tolerance ', m%check%tolerance
+    case ('double_helix')
+      if (n_checked == 0) call fail('no step checked')
+      write (*, '(a,f9.3,a,3es13.5,a,3es13.5,a)') trim(m%name) // ': check double_helix: turn ', &
+        last_phi * 180.0_dp / pi, ' degrees, middle node u ', last_u, ' (closed form ', last_ucf, ')'
+      write (*, '(a,i0,a,es9.2,a,es9.2,a,es9.2,a,es9.2,a)') '  steps checked ', n_checked, ', worst rel. error ', &
+        worst_f, ' (tolerance ', m%check%tolerance, ' + regularization_gap/4 absolute); twist shortening worst ', &
+        worst_ax, ' (bound 2 sqrt(EI/N)/L + g0/r_h = ', last_bound, ', turns from 1 rad)'
     case ('arc_slide')
       if (n_checked == 0) call fail('no step checked')
       write (*, '(a,es13.6,a,es13.6,a,es13.6,a,es13.6,a,es9.2,a,es9.2)') trim(m%name) // ': check arc_slide: f_N first ', &
