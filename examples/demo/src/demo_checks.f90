@@ -57,6 +57,7 @@ module demo_checks
   use demo_contact_report, only: contact_snapshot
   use demo_errors, only: str
   use demo_checks_line, only: line_check_step, line_check_finish
+  use demo_checks_strand, only: strand_kind, strand_check_step, strand_check_finish
   implicit none
   private
   public :: check_step, check_finish
@@ -208,6 +209,7 @@ contains
     do k = 1, snap%n
       f_model = f_model + snap%c(k)%info(13)
     end do
+    if (strand_kind(m%check%kind)) call strand_check_step(m, row, snap, fint)   ! demo_checks_strand
     associate (ba => m%check%beam_a, bb => m%check%beam_b, tol => m%check%tolerance)
       select case (trim(m%check%kind))
       case ('crossed_beams', 'cantilever_crossbar')
@@ -415,6 +417,7 @@ contains
                        + m%beam_n_el(m%check%beam_a) - 1)), ', tolerance ', m%check%tolerance
       if (n_checked < 2) call fail('fewer than two steps with every contact in slip under the pull: no plateau')
     end select
+    if (strand_kind(m%check%kind)) ok = strand_check_finish(m) .and. ok   ! demo_checks_strand
     passed = ok
     write (*, '(a)') trim(m%name) // ': check ' // trim(merge('PASSED', 'FAILED', ok))
   end function check_finish

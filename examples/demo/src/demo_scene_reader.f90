@@ -792,9 +792,10 @@ contains
     if (ios /= 0) call read_failed('check', 1, ios, iomsg)
     kind = lower(kind)
     if (.not. in_list(kind, 'crossed_beams cantilever_crossbar sliding friction_pull many_contacts capstan ' &
-                      // 'reference ' // line_check_kinds)) &
+                      // 'reference strand arc_slide double_helix ' // line_check_kinds)) &
       call bad('check', 1, 'kind', '''' // trim(kind) // ''' is not one of crossed_beams, cantilever_crossbar, ' &
-               // 'sliding, friction_pull, many_contacts, capstan, reference, ' // line_check_kinds)
+               // 'sliding, friction_pull, many_contacts, capstan, reference, strand, arc_slide, double_helix, ' &
+               // line_check_kinds)
     if (kind == 'reference' .and. .not. reference > 0.0_dp) &
       call bad('check', 1, 'reference', 'kind ''reference'' needs reference > 0 (the final displacement)')
     if (.not. m%contact%enabled) call bad('check', 1, 'kind', 'a contact check needs a &contact group')
