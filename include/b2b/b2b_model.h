@@ -162,9 +162,9 @@
  *     parameter set may be replaced only by one of the same contact kind
  *     (point, or line/all-angle; else B2B_ERR_SIZE). The crossing check
  *     (below) gives each point of a line pair new since the commit the
- *     normal of its projection on the committed geometry. Not yet:
- *     ALL_ANGLE's point part has no end contact and no handover (its
- *     friction restarts in stick on the next segment).
+ *     normal of its projection on the committed geometry. ALL_ANGLE's
+ *     point part follows its point across one joint of either beam per
+ *     update, as a point contact's does; it has no end contact (yet).
  *   Handover: a contact that was active at the last commit and whose point
  *     now lies outside its pair (the element reports xi or eta outside
  *     [-1, 1)) moves with its committed history to the neighbouring segment

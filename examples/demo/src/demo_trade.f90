@@ -58,8 +58,8 @@ module demo_trade
   character(len=*), parameter :: scene_what(2) = [character(len=40) :: 'frictionless', 'friction mu = 0.2']
 
   ! the line-contact scenes (full mode): file (relative to scene_dir) and name
-  character(len=*), parameter :: line_scenes(5) = [character(len=48) :: '../tests/line_limits/capstan_cylinder_90', &
-    '../tests/line_limits/capstan_cylinder_180', '../tests/line_limits/capstan_cylinder_360', 'line_load', &
+  character(len=*), parameter :: line_scenes(5) = [character(len=48) :: 'capstan_cylinder_90', &
+    'capstan_cylinder_180', 'capstan_cylinder_360', 'line_load', &
     'angle_sweep']
   character(len=*), parameter :: contact_types(3) = [character(len=9) :: 'point', 'line', 'all_angle']
   integer, parameter :: line_point_counts(3) = [4, 8, 16]
