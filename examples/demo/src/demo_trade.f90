@@ -184,10 +184,10 @@ contains
     call emit(u, '')
     call emit(u, 'The line-contact scenes with their own &check (README, "Line contact scenes"): the scene as it is ' &
               // '(first row), then one setting changed at a time. check error: the check''s worst relative error ' &
-              // '(euler_eytelwein: T_out/T_in against exp(mu theta) over the steps where the whole rope slides; ' &
+              // '(euler_eytelwein: T_out/T_in against exp(mu theta) over the steps where the rope slides steadily; ' &
               // 'line_load: the penetration against q / line_penalty; angle_sweep: the largest change of sum f_N ' &
-              // 'between steps over P). The capstans on a cylinder fail with every setting: the library transmits ' &
-              // 'no friction round a straight beam''s axis (T_out/T_in = 1).')
+              // 'between steps over P). The capstans need line contact: the point element''s closest-point problem ' &
+              // 'is singular there (a rope equidistant from the cylinder''s axis).')
     call emit(u, '')
     call emit(u, '| scene | contact_type | curve | line_points | check | check error | iter. mean | iter. max |' &
               // ' cut-backs | stopped | time s |')
