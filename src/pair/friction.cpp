@@ -109,13 +109,12 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   return fr;
 }
 
-void add_friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
-                          const Linearization& lin, const double* PAd, const double* PBd,
-                          double* Kc) {
-  if (!fr.anchored) return;  // T = 0 near this configuration
-  double PAn[36], PBn[36], scratch[36];
-  c.sa->jacobians(fr.xi_n, PAn, scratch);
-  c.sb->jacobians(fr.eta_n, PBn, scratch);
+void friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
+                      const Linearization& lin, const double* PAd, const double* PBd,
+                      double* Kc) {
+  double PAn[36], PBn[36];
+  c.sa->jacobian(fr.xi_n, PAn);
+  c.sb->jacobian(fr.eta_n, PBn);
   const double* n = c.n;
   const double eps = p.tangential_penalty;
   const double nd = dot3(n, fr.anchor_gap);
@@ -125,31 +124,39 @@ void add_friction_tangent(const Params& p, const FrictionContact& c, const Frict
   if (slip)
     for (int i = 0; i < 3; ++i) that[i] = fr.trial[i] / fr.trial_norm;
   const double ratio = slip ? limit / fr.trial_norm : 1.0;
+  const double f = c.normal_force, fp = c.normal_slope;
+  const bool rotating = c.rho_signed != 0.0;
+  const double s = rotating ? f / c.rho_signed : 0.0;
 
-  // dT/dX column by column (3 x m), and the rows' ( P_A,xi^T T | -P_B,eta^T T ).
+  // Every entry is a sum of five products, rows times columns:
+  //   K = J^T a + w0 C0^T + w1 C1^T,  a = M J + dT  (3 x m),
+  // with the normal part -f' g g^T - s (J^T (I - n n^T) J - B^T H^-1 B)
+  // (s = f / rho; at intersecting axes -f' g g^T + f (av C0^T + bv C1^T))
+  // as M = -s I + (s - f') n n^T (M = -f' n n^T), w0 = s B0 (f av), w1 = s B1
+  // (f bv), and the friction part J^T dT + [P_A,xi^T T; 0] dxi^T +
+  // [0; -P_B,eta^T T] deta^T with dxi = -C0, deta = -C1 in w0 and w1.
   const int m = lin.m;
-  double Tx[kNdof], Ty[kNdof], Tz[kNdof], u[kNdof], dxi[kNdof], deta[kNdof];
+  double ax[kNdof], ay[kNdof], az[kNdof], w0[kNdof], w1[kNdof];
   for (int k = 0; k < m; ++k) {
     const int col = lin.cols[k];
     const bool on_a = col < 12;
     const int cc = on_a ? col : col - 12;
-    dxi[k] = -lin.C0[k];
-    deta[k] = -lin.C1[k];
+    const double dxi = -lin.C0[k], deta = -lin.C1[k];
     const double J[3] = {lin.Jx[k], lin.Jy[k], lin.Jz[k]};
     // dn = (I - n n^T)(J + x_A,xi dxi - x_B,eta deta) / rho
     double dn[3] = {0, 0, 0};
-    if (c.rho_signed != 0.0) {
+    if (rotating) {
       double v[3];
-      for (int i = 0; i < 3; ++i) v[i] = J[i] + c.ta[i] * dxi[k] - c.tb[i] * deta[k];
+      for (int i = 0; i < 3; ++i) v[i] = J[i] + c.ta[i] * dxi - c.tb[i] * deta;
       const double nv = dot3(n, v);
       for (int i = 0; i < 3; ++i) dn[i] = (v[i] - nv * n[i]) / c.rho_signed;
     }
     // de1 = (I - e1 e1^T) d(x_A,xi) / |x_A,xi|, d(x_A,xi) = P_A,xi + x_A,xixi dxi
     double dta[3], de1[3], de2[3], t1[3], t2[3];
     if (fr.frame_source == kFrameB)  // d(x_B,eta) = P_B,eta + x_B,etaeta deta
-      for (int i = 0; i < 3; ++i) dta[i] = (on_a ? 0.0 : PBd[3 * cc + i]) + c.tbd[i] * deta[k];
+      for (int i = 0; i < 3; ++i) dta[i] = (on_a ? 0.0 : PBd[3 * cc + i]) + c.tbd[i] * deta;
     else if (fr.frame_source == kFrameA)
-      for (int i = 0; i < 3; ++i) dta[i] = (on_a ? PAd[3 * cc + i] : 0.0) + c.tad[i] * dxi[k];
+      for (int i = 0; i < 3; ++i) dta[i] = (on_a ? PAd[3 * cc + i] : 0.0) + c.tad[i] * dxi;
     else  // a constant axis
       for (int i = 0; i < 3; ++i) dta[i] = 0.0;
     if (fr.projected) {  // p = (I - n n^T) t: dp = (I - n n^T) dt - (n.t) dn - n (dn.t)
@@ -172,26 +179,42 @@ void add_friction_tangent(const Params& p, const FrictionContact& c, const Frict
       dtr[i] = fr.committed_e1 * de1[i] + fr.committed_e2 * de2[i] + eps * dgt[i];
     // slip: T = mu f_N that, dT = mu that df_N + (mu f_N/|T_tr|)(I - that that^T) dT_tr
     double dT[3];
+    const double g = lin.g[k];
     if (slip) {
       const double tdt = dot3(that, dtr);
-      const double dfn = p.friction * c.normal_slope * lin.g[k];
+      const double dfn = p.friction * fp * g;
       for (int i = 0; i < 3; ++i) dT[i] = that[i] * dfn + ratio * (dtr[i] - tdt * that[i]);
     } else {
       for (int i = 0; i < 3; ++i) dT[i] = dtr[i];
     }
-    Tx[k] = dT[0];
-    Ty[k] = dT[1];
-    Tz[k] = dT[2];
-    u[k] = on_a ? dot3(PAd + 3 * cc, fr.T) : -dot3(PBd + 3 * cc, fr.T);
+    // the columns' factors: a = M J + dT
+    if (rotating) {
+      const double sn = (s - fp) * g;
+      ax[k] = (sn * n[0] - s * J[0]) + dT[0];
+      ay[k] = (sn * n[1] - s * J[1]) + dT[1];
+      az[k] = (sn * n[2] - s * J[2]) + dT[2];
+    } else {
+      ax[k] = -fp * g * n[0] + dT[0];
+      ay[k] = -fp * g * n[1] + dT[1];
+      az[k] = -fp * g * n[2] + dT[2];
+    }
+    // the rows' factors of C0 and C1, with the convective terms ( P_A,xi^T T | -P_B,eta^T T )
+    const double b0 = rotating ? s * lin.B0[k] : f * lin.av[k];
+    const double b1 = rotating ? s * lin.B1[k] : f * lin.bv[k];
+    if (on_a) {
+      w0[k] = b0 - dot3(PAd + 3 * cc, fr.T);
+      w1[k] = b1;
+    } else {
+      w0[k] = b0;
+      w1[k] = b1 + dot3(PBd + 3 * cc, fr.T);
+    }
   }
-  // K += J^T dT + [P_A,xi^T T dxi^T; -P_B,eta^T T deta^T]
+  const double *Jx = lin.Jx, *Jy = lin.Jy, *Jz = lin.Jz, *C0 = lin.C0, *C1 = lin.C1;
   for (int cidx = 0; cidx < m; ++cidx) {
     double* colp = Kc + kNdof * cidx;
-    const double tx = Tx[cidx], ty = Ty[cidx], tz = Tz[cidx], dx = dxi[cidx], de = deta[cidx];
-    for (int r = 0; r < m; ++r) {
-      const double conv = lin.cols[r] < 12 ? u[r] * dx : u[r] * de;
-      colp[r] += lin.Jx[r] * tx + lin.Jy[r] * ty + lin.Jz[r] * tz + conv;
-    }
+    const double tx = ax[cidx], ty = ay[cidx], tz = az[cidx], c0 = C0[cidx], c1 = C1[cidx];
+    for (int r = 0; r < m; ++r)
+      colp[r] = (Jx[r] * tx + Jy[r] * ty + Jz[r] * tz) + (w0[r] * c0 + w1[r] * c1);
   }
 }
 
