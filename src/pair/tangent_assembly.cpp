@@ -104,6 +104,13 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
     // what is left of the closest points' motion is not symmetric.
     normal_tangent_intersecting(lin, fp, f, Kc);
   }
+  // Without the curves' second derivatives the compact matrix is all of K:
+  // its finiteness is K's.
+  bool finite_known = false;
+  if (!curved && Kc != K) {
+    for (int c = 0; c < m && res.finite; ++c) res.finite = all_finite(Kc + kNdof * c, m);
+    finite_known = true;
+  }
   if (Kc != K)  // the used columns come in whole slots: three rows at a time
     for (int c = 0; c < m; ++c) {
       double* dst = K + kNdof * cols[c];
@@ -131,7 +138,8 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
       B.seg->add_contracted_hessian(k.eta, k.n, f, K + 12 + 12 * kNdof, kNdof);
     }
   }
-  for (int c = 0; c < kNdof && res.finite; ++c) res.finite = all_finite(K + kNdof * c, kNdof);
+  if (!finite_known)
+    for (int c = 0; c < kNdof && res.finite; ++c) res.finite = all_finite(K + kNdof * c, kNdof);
   return res;
 }
 
