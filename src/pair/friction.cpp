@@ -154,6 +154,26 @@ void five_term_pass(int m, const double* __restrict Jx, const double* __restrict
   }
 }
 
+// The same where every column of J lies along its own axis (both segments
+// linear in X; row r along axis r % 3, the used columns come in whole
+// slots): the two zero products of J^T a drop out, the sums are unchanged.
+void three_term_pass(int m, const double* __restrict Jx, const double* __restrict Jy,
+                     const double* __restrict Jz, const double* __restrict w0,
+                     const double* __restrict w1, const double* __restrict ax,
+                     const double* __restrict ay, const double* __restrict az,
+                     const double* __restrict C0, const double* __restrict C1,
+                     double* __restrict Kc) {
+  for (int c = 0; c < m; ++c) {
+    double* col = Kc + kNdof * c;
+    const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
+    for (int r = 0; r < m; r += 3) {
+      col[r] = Jx[r] * tx + (w0[r] * c0 + w1[r] * c1);
+      col[r + 1] = Jy[r + 1] * ty + (w0[r + 1] * c0 + w1[r + 1] * c1);
+      col[r + 2] = Jz[r + 2] * tz + (w0[r + 2] * c0 + w1[r + 2] * c1);
+    }
+  }
+}
+
 }  // namespace
 
 void friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
@@ -271,6 +291,36 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
   // w1 = s B1 (f bv) - (J v_eta) + [0; P_B,eta^T T].
   const int m = lin.m;
   double ax[kNdof], ay[kNdof], az[kNdof], w0[kNdof], w1[kNdof];
+  // Both segments linear in X: every column of J, P_A,xi, P_B,eta and J_n
+  // along its own axis i = k % 3, so that each 3x3 product is one column of
+  // the matrix (the same sums: the other two products are zeros).
+  const bool axial = lin.axial && c.sa->linear_in_X() && c.sb->linear_in_X();
+  for (int k = 0; k < m && axial; ++k) {
+    const int col = lin.cols[k];
+    const bool on_a = col < 12;
+    const int cc = on_a ? col : col - 12, i = k % 3;
+    const double ji = i == 0 ? lin.Jx[k] : (i == 1 ? lin.Jy[k] : lin.Jz[k]);
+    const double jn = on_a ? PAn[3 * cc + i] : -PBn[3 * cc + i];
+    const double pd = on_a ? PAd[3 * cc + i] : PBd[3 * cc + i];
+    const bool with_pd = (pd_on_a && on_a) || (pd_on_b && !on_a);
+    double a[3];
+    for (int r = 0; r < 3; ++r) {
+      a[r] = A[r + 3 * i] * ji + Mjn[r + 3 * i] * jn;
+      if (with_pd) a[r] += Mta[r + 3 * i] * pd;
+    }
+    ax[k] = a[0];
+    ay[k] = a[1];
+    az[k] = a[2];
+    const double b0 = rotating ? s * lin.B0[k] : f * lin.av[k];
+    const double b1 = rotating ? s * lin.B1[k] : f * lin.bv[k];
+    const double conv = pd * fr.T[i];
+    w0[k] = (on_a ? b0 - conv : b0) - ji * v_xi[i];
+    w1[k] = (on_a ? b1 : b1 + conv) - ji * v_eta[i];
+  }
+  if (axial) {
+    three_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, ax, ay, az, lin.C0, lin.C1, Kc);
+    return;
+  }
   for (int k = 0; k < m; ++k) {
     const int col = lin.cols[k];
     const bool on_a = col < 12;
