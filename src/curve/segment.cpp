@@ -284,6 +284,27 @@ void Segment::jacobians(double xi, double* P, double* Pd) const {
   }
 }
 
+void Segment::jacobian(double xi, double* P) const {
+  double wgt[4] = {0, 0, 0, 0};
+  if (linear_kind_) {
+    wgt[1] = 0.5 * (1.0 - xi);
+    wgt[2] = 0.5 * (1.0 + xi);
+  }
+  const HermiteBasis hb(xi);
+  for (int k = 0; k < 4 && !linear_kind_; ++k) {
+    if (term_[k].nonlinear) continue;
+    for (int s = 0; s < 4; ++s) wgt[s] += hb.h[k] * term_[k].coef[s];
+  }
+  std::memset(P, 0, 36 * sizeof(double));
+  for (int s = 0; s < 4; ++s)
+    for (int i = 0; i < 3; ++i) P[i + 3 * (3 * s + i)] = wgt[s];
+  for (int k = 1; k < 4; k += 2) {
+    if (!term_[k].nonlinear) continue;
+    const double* J = term_[k].tangent.jac;
+    for (int m = 0; m < 36; ++m) P[m] += hb.h[k] * J[m];
+  }
+}
+
 namespace {
 
 // Block (A, B) of the symmetric 9x9 Z of the node differences z_1..z_3, of

@@ -52,6 +52,8 @@ class Segment {
   void point_from(const double* origin, double xi, double* x, double* xd, double* xdd) const;
   // P = dx/dX and Pd = d(dx/dxi)/dX, 3x12 column-major each.
   void jacobians(double xi, double* P, double* Pd) const;
+  // P = dx/dX alone.
+  void jacobian(double xi, double* P) const;
   // Hx = w . d2x/dX2 and Hxd = w . d2(dx/dxi)/dX2, 12x12 column-major each,
   // exactly symmetric; Hxd may be null (not computed).
   void contracted_hessians(double xi, const double* w, double* Hx, double* Hxd) const;

@@ -132,104 +132,267 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   return fr;
 }
 
-void add_friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
-                          const Linearization& lin, const double* PAd, const double* PBd,
-                          double* Kc) {
-  if (!fr.anchored) return;  // T = 0 near this configuration
-  double PAn[36], PBn[36], PBnd[36], scratch[36];
-  c.sa->jacobians(fr.xi_n, PAn, scratch);
-  c.sb->jacobians(fr.eta_n, PBn, PBnd);
+namespace {
+
+// 3 x 3 matrices, column-major.
+void matmul3(const double* A, const double* B, double* C) {  // C = A B
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      C[i + 3 * j] = A[i] * B[3 * j] + A[i + 3] * B[3 * j + 1] + A[i + 6] * B[3 * j + 2];
+}
+void matvec3(const double* A, const double* v, double* y) {  // y = A v
+  for (int i = 0; i < 3; ++i) y[i] = A[i] * v[0] + A[i + 3] * v[1] + A[i + 6] * v[2];
+}
+// a I + u v^T
+void rank_one3(double a, const double* u, const double* v, double* M) {
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) M[i + 3 * j] = (i == j ? a : 0.0) + u[i] * v[j];
+}
+// a I + b [w]x ([w]x v = w x v)
+void cross_matrix3(double a, double b, const double* w, double* M) {
+  M[0] = a;
+  M[1] = b * w[2];
+  M[2] = -b * w[1];
+  M[3] = -b * w[2];
+  M[4] = a;
+  M[5] = b * w[0];
+  M[6] = b * w[1];
+  M[7] = -b * w[0];
+  M[8] = a;
+}
+
+// Kc = J^T a + w0 C0^T + w1 C1^T on the m x m used block (the five
+// products of friction_tangent); restrict: the compiler vectorises the rows.
+void five_term_pass(int m, const double* __restrict Jx, const double* __restrict Jy,
+                    const double* __restrict Jz, const double* __restrict w0,
+                    const double* __restrict w1, const double* __restrict ax,
+                    const double* __restrict ay, const double* __restrict az,
+                    const double* __restrict C0, const double* __restrict C1,
+                    double* __restrict Kc) {
+  for (int c = 0; c < m; ++c) {
+    double* col = Kc + kNdof * c;
+    const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
+    for (int r = 0; r < m; ++r)
+      col[r] = (Jx[r] * tx + Jy[r] * ty + Jz[r] * tz) + (w0[r] * c0 + w1[r] * c1);
+  }
+}
+
+// The same where every column of J lies along its own axis (both segments
+// linear in X; row r along axis r % 3, the used columns come in whole
+// slots): the two zero products of J^T a drop out, the sums are unchanged.
+void three_term_pass(int m, const double* __restrict Jx, const double* __restrict Jy,
+                     const double* __restrict Jz, const double* __restrict w0,
+                     const double* __restrict w1, const double* __restrict ax,
+                     const double* __restrict ay, const double* __restrict az,
+                     const double* __restrict C0, const double* __restrict C1,
+                     double* __restrict Kc) {
+  for (int c = 0; c < m; ++c) {
+    double* col = Kc + kNdof * c;
+    const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
+    for (int r = 0; r < m; r += 3) {
+      col[r] = Jx[r] * tx + (w0[r] * c0 + w1[r] * c1);
+      col[r + 1] = Jy[r + 1] * ty + (w0[r + 1] * c0 + w1[r + 1] * c1);
+      col[r + 2] = Jz[r + 2] * tz + (w0[r + 2] * c0 + w1[r + 2] * c1);
+    }
+  }
+}
+
+}  // namespace
+
+void friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
+                      const Linearization& lin, const double* PAd, const double* PBd,
+                      double* Kc) {
+  double PAn[36], PBn[36], PBnd[36];
+  c.sa->jacobian(fr.xi_n, PAn);
+  if (fr.surface)  // the surface anchor moves with B's tangent at eta_n too
+    c.sb->jacobians(fr.eta_n, PBn, PBnd);
+  else
+    c.sb->jacobian(fr.eta_n, PBn);
   const double* n = c.n;
   const double eps = p.tangential_penalty;
   const double nd = dot3(n, fr.anchor_gap);
   const bool slip = fr.state == B2B_FRICTION_SLIP;
   const double limit = p.friction * c.normal_force;
-  double that[3] = {0, 0, 0};
-  if (slip)
-    for (int i = 0; i < 3; ++i) that[i] = fr.trial[i] / fr.trial_norm;
-  const double ratio = slip ? limit / fr.trial_norm : 1.0;
+  const double f = c.normal_force, fp = c.normal_slope;
+  const bool rotating = c.rho_signed != 0.0;
+  const double s = rotating ? f / c.rho_signed : 0.0;
 
-  // dT/dX column by column (3 x m), and the rows' ( P_A,xi^T T | -P_B,eta^T T ).
+  // dT is linear in what a column moves: J (through dn and, in slip, df_N =
+  // f' n.J), dxi, deta, the frame tangent's jacobian column pd and the
+  // anchors' jn (doc/friction.md section 6). Its 3 x 3 factors, once:
+  //   dn   = Pn (J + x_A,xi dxi - x_B,eta deta) / rho,  Pn = I - n n^T
+  //   de1  = E (S dta - Q dn),  E = (I - e1 e1^T) / |t|, dta = pd + t' dxi (deta)
+  //          (projected frame: S = Pn, Q = (n.t) I + n t^T; else S = I, Q = 0)
+  //   dT_tr = F de1 + G dn + eps Pn jn,  F = c1 I + c2 [n]x,
+  //          G = -c2 [e1]x - eps (nd I + n d_n^T)
+  //   dT   = R dT_tr + mu f' that (n.J),  R = ratio (I - that that^T) in slip, I in stick
+  // so dT = Mdn dn + Mta dta + Mjn jn + tg n^T J with Mta = R F E S,
+  // Mdn = R (G - F E Q), Mjn = eps R Pn, tg = mu f' that (slip).
+  double Pn[9], R[9], E[9], F[9], G[9], tg[3] = {0, 0, 0};
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) Pn[i + 3 * j] = (i == j ? 1.0 : 0.0) - n[i] * n[j];
+  if (slip) {
+    double that[3], mthat[3];
+    for (int i = 0; i < 3; ++i) {
+      that[i] = fr.trial[i] / fr.trial_norm;
+      tg[i] = p.friction * fp * that[i];
+    }
+    const double ratio = limit / fr.trial_norm;
+    for (int i = 0; i < 3; ++i) mthat[i] = -ratio * that[i];
+    rank_one3(ratio, mthat, that, R);
+  } else {
+    const double zero[3] = {0, 0, 0};
+    rank_one3(1.0, zero, zero, R);
+  }
+  {
+    double me1[3];
+    const double inv = 1.0 / fr.frame_norm;
+    for (int i = 0; i < 3; ++i) me1[i] = -inv * fr.e1[i];
+    rank_one3(inv, me1, fr.e1, E);
+  }
+  cross_matrix3(fr.committed_e1, fr.committed_e2, n, F);
+  {
+    double Ge[9], epsn[3];
+    cross_matrix3(0.0, -fr.committed_e2, fr.e1, Ge);
+    for (int i = 0; i < 3; ++i) epsn[i] = -eps * n[i];
+    rank_one3(-eps * nd, epsn, fr.anchor_gap, G);
+    for (int k = 0; k < 9; ++k) G[k] += Ge[k];
+  }
+  double FE[9], RFE[9], Mta[9], Mdn[9], Mjn[9], tmp[9];
+  matmul3(F, E, FE);
+  matmul3(R, FE, RFE);
+  if (fr.projected) {
+    const double* t = frame_tangent(fr, c);
+    double Q[9], FEQ[9];
+    rank_one3(dot3(n, t), n, t, Q);
+    matmul3(FE, Q, FEQ);
+    for (int k = 0; k < 9; ++k) tmp[k] = G[k] - FEQ[k];
+    matmul3(RFE, Pn, Mta);
+  } else {
+    for (int k = 0; k < 9; ++k) {
+      tmp[k] = G[k];
+      Mta[k] = RFE[k];
+    }
+  }
+  matmul3(R, tmp, Mdn);
+  matmul3(R, Pn, Mjn);
+  for (int k = 0; k < 9; ++k) Mjn[k] *= eps;
+  // dn's factors: Pn / rho on J, Pn x_A,xi / rho on dxi, -Pn x_B,eta / rho on deta
+  // (zero where the normal does not rotate).
+  const double inv_rho = rotating ? 1.0 / c.rho_signed : 0.0;
+  double PnR[9], dn_xi[3], dn_eta[3];
+  for (int k = 0; k < 9; ++k) PnR[k] = Pn[k] * inv_rho;
+  matvec3(PnR, c.ta, dn_xi);
+  matvec3(PnR, c.tb, dn_eta);
+  // The columns' factor a = M J + dT, with the normal part M = -s I + (s -
+  // f') n n^T (-f' n n^T at intersecting axes), all on J in one matrix:
+  //   A = M + Mdn Pn / rho + tg n^T;
+  // the terms in dxi and deta go to the rows (below): v_xi = Mdn dn_xi
+  // (+ Mta x_A,xixi, frame A), v_eta = -Mdn dn_eta (+ Mta x_B,etaeta, frame B).
+  double A[9], v_xi[3], v_eta[3];
+  matmul3(Mdn, PnR, A);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      A[i + 3 * j] += (i == j ? -s : 0.0) + ((s - fp) * n[i] + tg[i]) * n[j];
+  matvec3(Mdn, dn_xi, v_xi);
+  matvec3(Mdn, dn_eta, v_eta);
+  for (int i = 0; i < 3; ++i) v_eta[i] = -v_eta[i];
+  const bool pd_on_a = fr.frame_source == kFrameA, pd_on_b = fr.frame_source == kFrameB;
+  if (pd_on_a) {
+    double y[3];
+    matvec3(Mta, c.tad, y);
+    for (int i = 0; i < 3; ++i) v_xi[i] += y[i];
+  } else if (pd_on_b) {
+    double y[3];
+    matvec3(Mta, c.tbd, y);
+    for (int i = 0; i < 3; ++i) v_eta[i] += y[i];
+  }
+
+  // Every entry is a sum of five products, rows times columns:
+  //   K = J^T a + w0 C0^T + w1 C1^T,
+  // the normal part -s (J^T (I - n n^T) J - B^T H^-1 B) - f' g g^T (at
+  // intersecting axes -f' g g^T + f (av C0^T + bv C1^T)) and the friction
+  // part J^T dT + [P_A,xi^T T; 0] dxi^T + [0; -P_B,eta^T T] deta^T, with
+  // dxi = -C0, deta = -C1: w0 = s B0 (f av) - (J v_xi) - [P_A,xi^T T; 0],
+  // w1 = s B1 (f bv) - (J v_eta) + [0; P_B,eta^T T].
   const int m = lin.m;
-  double Tx[kNdof], Ty[kNdof], Tz[kNdof], u[kNdof], dxi[kNdof], deta[kNdof];
+  double ax[kNdof], ay[kNdof], az[kNdof], w0[kNdof], w1[kNdof];
+  // Both segments linear in X: every column of J, P_A,xi, P_B,eta and J_n
+  // along its own axis i = k % 3, so that each 3x3 product is one column of
+  // the matrix (the same sums: the other two products are zeros).
+  // (Not with the surface anchor: its dm has no such direction.)
+  const bool axial =
+      lin.axial && c.sa->linear_in_X() && c.sb->linear_in_X() && !fr.surface;
+  for (int k = 0; k < m && axial; ++k) {
+    const int col = lin.cols[k];
+    const bool on_a = col < 12;
+    const int cc = on_a ? col : col - 12, i = k % 3;
+    const double ji = i == 0 ? lin.Jx[k] : (i == 1 ? lin.Jy[k] : lin.Jz[k]);
+    const double jn = on_a ? PAn[3 * cc + i] : -PBn[3 * cc + i];
+    const double pd = on_a ? PAd[3 * cc + i] : PBd[3 * cc + i];
+    const bool with_pd = (pd_on_a && on_a) || (pd_on_b && !on_a);
+    double a[3];
+    for (int r = 0; r < 3; ++r) {
+      a[r] = A[r + 3 * i] * ji + Mjn[r + 3 * i] * jn;
+      if (with_pd) a[r] += Mta[r + 3 * i] * pd;
+    }
+    ax[k] = a[0];
+    ay[k] = a[1];
+    az[k] = a[2];
+    const double b0 = rotating ? s * lin.B0[k] : f * lin.av[k];
+    const double b1 = rotating ? s * lin.B1[k] : f * lin.bv[k];
+    const double conv = pd * fr.T[i];
+    w0[k] = (on_a ? b0 - conv : b0) - ji * v_xi[i];
+    w1[k] = (on_a ? b1 : b1 + conv) - ji * v_eta[i];
+  }
+  if (axial) {
+    three_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, ax, ay, az, lin.C0, lin.C1, Kc);
+    return;
+  }
   for (int k = 0; k < m; ++k) {
     const int col = lin.cols[k];
     const bool on_a = col < 12;
     const int cc = on_a ? col : col - 12;
-    dxi[k] = -lin.C0[k];
-    deta[k] = -lin.C1[k];
     const double J[3] = {lin.Jx[k], lin.Jy[k], lin.Jz[k]};
-    // dn = (I - n n^T)(J + x_A,xi dxi - x_B,eta deta) / rho
-    double dn[3] = {0, 0, 0};
-    if (c.rho_signed != 0.0) {
-      double v[3];
-      for (int i = 0; i < 3; ++i) v[i] = J[i] + c.ta[i] * dxi[k] - c.tb[i] * deta[k];
-      const double nv = dot3(n, v);
-      for (int i = 0; i < 3; ++i) dn[i] = (v[i] - nv * n[i]) / c.rho_signed;
-    }
-    // de1 = (I - e1 e1^T) d(x_A,xi) / |x_A,xi|, d(x_A,xi) = P_A,xi + x_A,xixi dxi
-    double dta[3], de1[3], de2[3], t1[3], t2[3];
-    if (fr.frame_source == kFrameB)  // d(x_B,eta) = P_B,eta + x_B,etaeta deta
-      for (int i = 0; i < 3; ++i) dta[i] = (on_a ? 0.0 : PBd[3 * cc + i]) + c.tbd[i] * deta[k];
-    else if (fr.frame_source == kFrameA)
-      for (int i = 0; i < 3; ++i) dta[i] = (on_a ? PAd[3 * cc + i] : 0.0) + c.tad[i] * dxi[k];
-    else  // a constant axis
-      for (int i = 0; i < 3; ++i) dta[i] = 0.0;
-    if (fr.projected) {  // p = (I - n n^T) t: dp = (I - n n^T) dt - (n.t) dn - n (dn.t)
-      const double* t = frame_tangent(fr, c);
-      const double tn = dot3(n, t), ndt = dot3(n, dta), dnt = dot3(dn, t);
-      for (int i = 0; i < 3; ++i) dta[i] -= ndt * n[i] + tn * dn[i] + dnt * n[i];
-    }
-    const double e1dta = dot3(fr.e1, dta);
-    for (int i = 0; i < 3; ++i) de1[i] = (dta[i] - e1dta * fr.e1[i]) / fr.frame_norm;
-    cross3(dn, fr.e1, t1);  // de2 = dn x e1 + n x de1
-    cross3(n, de1, t2);
-    for (int i = 0; i < 3; ++i) de2[i] = t1[i] + t2[i];
-    // dg_T = (I - n n^T) J_n - (n . d_n) dn - n (d_n . dn), J_n = [P_A(xi_n), -P_B(eta_n)]
-    double jn[3], dgt[3];
-    for (int i = 0; i < 3; ++i) jn[i] = on_a ? PAn[3 * cc + i] : -PBn[3 * cc + i];
+    double a[3], y[3];
+    const double* pn = on_a ? PAn + 3 * cc : PBn + 3 * cc;
+    const double sn = on_a ? 1.0 : -1.0;
+    double jn[3] = {sn * pn[0], sn * pn[1], sn * pn[2]};
     if (fr.surface && !on_a) {
-      // - r_B dm: dt = (I - t t^T) dx_B,eta(eta_n) / |x_B,eta|,
+      // the surface anchor's - r_B dm: dt = (I - t t^T) dx_B,eta(eta_n) / |x_B,eta|,
       // dp = -(dt (t.n_n) + t (dt.n_n)), dm = (I - m m^T) dp / |p|
-      const double* pd = PBnd + 3 * cc;
+      const double* pdn = PBnd + 3 * cc;
       const double* t = fr.surface_t;
-      const double tp = dot3(t, pd);
+      const double tp = dot3(t, pdn);
       double dt[3], dp[3];
-      for (int i = 0; i < 3; ++i) dt[i] = (pd[i] - tp * t[i]) / fr.surface_speed;
+      for (int i = 0; i < 3; ++i) dt[i] = (pdn[i] - tp * t[i]) / fr.surface_speed;
       const double dtn = dot3(dt, fr.surface_nn);
       for (int i = 0; i < 3; ++i) dp[i] = -(dt[i] * fr.surface_tnn + t[i] * dtn);
       const double mdp = dot3(fr.surface_m, dp);
       for (int i = 0; i < 3; ++i)
         jn[i] -= c.surface_b * (dp[i] - mdp * fr.surface_m[i]) / fr.surface_pn;
     }
-    const double njn = dot3(n, jn), ddn = dot3(fr.anchor_gap, dn);
-    for (int i = 0; i < 3; ++i) dgt[i] = jn[i] - njn * n[i] - nd * dn[i] - ddn * n[i];
-    double dtr[3];
-    for (int i = 0; i < 3; ++i)
-      dtr[i] = fr.committed_e1 * de1[i] + fr.committed_e2 * de2[i] + eps * dgt[i];
-    // slip: T = mu f_N that, dT = mu that df_N + (mu f_N/|T_tr|)(I - that that^T) dT_tr
-    double dT[3];
-    if (slip) {
-      const double tdt = dot3(that, dtr);
-      const double dfn = p.friction * c.normal_slope * lin.g[k];
-      for (int i = 0; i < 3; ++i) dT[i] = that[i] * dfn + ratio * (dtr[i] - tdt * that[i]);
+    matvec3(A, J, a);
+    matvec3(Mjn, jn, y);
+    for (int i = 0; i < 3; ++i) a[i] += y[i];
+    if ((pd_on_a && on_a) || (pd_on_b && !on_a)) {
+      matvec3(Mta, (on_a ? PAd : PBd) + 3 * cc, y);
+      for (int i = 0; i < 3; ++i) a[i] += y[i];
+    }
+    ax[k] = a[0];
+    ay[k] = a[1];
+    az[k] = a[2];
+    const double b0 = rotating ? s * lin.B0[k] : f * lin.av[k];
+    const double b1 = rotating ? s * lin.B1[k] : f * lin.bv[k];
+    if (on_a) {
+      w0[k] = (b0 - dot3(PAd + 3 * cc, fr.T)) - dot3(J, v_xi);
+      w1[k] = b1 - dot3(J, v_eta);
     } else {
-      for (int i = 0; i < 3; ++i) dT[i] = dtr[i];
-    }
-    Tx[k] = dT[0];
-    Ty[k] = dT[1];
-    Tz[k] = dT[2];
-    u[k] = on_a ? dot3(PAd + 3 * cc, fr.T) : -dot3(PBd + 3 * cc, fr.T);
-  }
-  // K += J^T dT + [P_A,xi^T T dxi^T; -P_B,eta^T T deta^T]
-  for (int cidx = 0; cidx < m; ++cidx) {
-    double* colp = Kc + kNdof * cidx;
-    const double tx = Tx[cidx], ty = Ty[cidx], tz = Tz[cidx], dx = dxi[cidx], de = deta[cidx];
-    for (int r = 0; r < m; ++r) {
-      const double conv = lin.cols[r] < 12 ? u[r] * dx : u[r] * de;
-      colp[r] += lin.Jx[r] * tx + lin.Jy[r] * ty + lin.Jz[r] * tz + conv;
+      w0[k] = b0 - dot3(J, v_xi);
+      w1[k] = (b1 + dot3(PBd + 3 * cc, fr.T)) - dot3(J, v_eta);
     }
   }
+  five_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, ax, ay, az, lin.C0, lin.C1, Kc);
 }
 
 }  // namespace pair

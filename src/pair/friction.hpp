@@ -70,13 +70,14 @@ struct FrictionResult {
 // hist_old: the pair's committed history (friction layout, validated).
 FrictionResult friction_force(const Params& p, const FrictionContact& c, const double* hist_old);
 
-// Kc += d[P_A^T T; -P_B^T T]/dX on the used columns (m x m, leading
-// dimension kNdof), except the curves' second derivatives in X, which the
-// caller adds with the weights T (beam A) and -T (beam B). PAd, PBd: the
-// 3x12 jacobians of x_A,xi and x_B,eta at the contact.
-void add_friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
-                          const Linearization& lin, const double* PAd, const double* PBd,
-                          double* Kc);
+// Kc = the tangent on the used columns (m x m, leading dimension kNdof) of
+// an anchored contact (fr.anchored), normal and friction parts, except the
+// curves' second derivatives in X, which the caller adds with the weights
+// T - f_N n (beam A) and its negative (beam B). PAd, PBd: the 3x12
+// jacobians of x_A,xi and x_B,eta at the contact.
+void friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
+                      const Linearization& lin, const double* PAd, const double* PBd,
+                      double* Kc);
 
 }  // namespace pair
 }  // namespace b2b

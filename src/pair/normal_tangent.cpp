@@ -7,6 +7,32 @@
 namespace b2b {
 namespace pair {
 
+namespace {
+
+// Rows 0..c of column c, rounded up to an even count (at most m): the
+// vectorised loop then needs no scalar remainder, and the one entry below
+// the diagonal it writes is overwritten by the caller's mirror (or not read).
+inline int upper_rows(int c, int m) {
+  const int r = (c + 2) & ~1;
+  return r < m ? r : m;
+}
+
+// col[r] = sum of the rank-one terms' row vectors times their factors, r < rows.
+void upper_column(int rows, const double* __restrict v0, const double* __restrict v1,
+                  const double* __restrict v2, const double* __restrict v3, double a0,
+                  double a1, double a2, double a3, double* __restrict col) {
+  for (int r = 0; r < rows; ++r) col[r] = v0[r] * a0 + v1[r] * a1 + v2[r] * a2 + v3[r] * a3;
+}
+void upper_column(int rows, const double* __restrict v0, const double* __restrict v1,
+                  const double* __restrict v2, const double* __restrict v3,
+                  const double* __restrict v4, double a0, double a1, double a2, double a3,
+                  double a4, double* __restrict col) {
+  for (int r = 0; r < rows; ++r)
+    col[r] = v0[r] * a0 + v1[r] * a1 + v2[r] * a2 + v3[r] * a3 + v4[r] * a4;
+}
+
+}  // namespace
+
 void normal_tangent_upper(const Linearization& lin, double fp, double f_over_rho, double* Kc) {
   // K = -fp g g^T - s J^T (I - n n^T) J + s B^T H^-1 B, s = f/rho, as a sum of
   // rank-one terms, rows times columns, with B^T H^-1 B = B0 C0^T + B1 C1^T.
@@ -28,8 +54,7 @@ void normal_tangent_upper(const Linearization& lin, double fp, double f_over_rho
     for (int c = 0; c < m; ++c) {
       const double* Ji = Jrow[lin.cols[c] % 3];
       const double a0 = sg * g[c], a1 = -s * Ji[c], a2 = s * lin.C0[c], a3 = s * lin.C1[c];
-      double* col = Kc + kNdof * c;
-      for (int r = 0; r <= c; ++r) col[r] = g[r] * a0 + Ji[r] * a1 + B0[r] * a2 + B1[r] * a3;
+      upper_column(upper_rows(c, m), g, Ji, B0, B1, a0, a1, a2, a3, Kc + kNdof * c);
     }
     return;
   }
@@ -60,9 +85,7 @@ void normal_tangent_upper(const Linearization& lin, double fp, double f_over_rho
   for (int c = 0; c < m; ++c) {
     const double a0 = -fp * g[c], a1 = sq * p1[c], a2 = sq * p2[c], a3 = s * lin.C0[c],
                  a4 = s * lin.C1[c];
-    double* col = Kc + kNdof * c;
-    for (int r = 0; r <= c; ++r)
-      col[r] = g[r] * a0 + p1[r] * a1 + p2[r] * a2 + B0[r] * a3 + B1[r] * a4;
+    upper_column(upper_rows(c, m), g, p1, p2, B0, B1, a0, a1, a2, a3, a4, Kc + kNdof * c);
   }
 }
 

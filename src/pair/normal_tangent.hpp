@@ -10,7 +10,9 @@
 namespace b2b {
 namespace pair {
 
-// Upper triangle of the m x m compact K (leading dimension kNdof).
+// Upper triangle of the m x m compact K (leading dimension kNdof); an even
+// column c also gets its entry (c + 1, c) below the diagonal (the rows are
+// written in pairs), which the caller mirrors over or does not read.
 void normal_tangent_upper(const Linearization& lin, double fp, double f_over_rho, double* Kc);
 
 // Exactly intersecting axes (the normal is the history's and does not

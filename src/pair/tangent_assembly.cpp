@@ -16,6 +16,24 @@ void mirror_upper(double* K, int n, int ld) {
     for (int r = c + 1; r < n; ++r) K[r + ld * c] = K[c + ld * r];
 }
 
+// K (zeroed) at the used rows and columns from the upper triangle of the
+// compact Kc, both triangles written; whether those entries are finite.
+bool scatter_symmetric(const double* Kc, int m, const int* cols, double* K) {
+  bool finite = true;
+  for (int c = 0; c < m; ++c) {
+    const double* src = Kc + kNdof * c;
+    finite = finite && all_finite(src, c + 1);
+    double* dst = K + kNdof * cols[c];
+    double* row = K + cols[c];
+    for (int r = 0; r <= c; ++r) {
+      const double v = src[r];
+      dst[cols[r]] = v;
+      row[kNdof * cols[r]] = v;
+    }
+  }
+  return finite;
+}
+
 }  // namespace
 
 TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
@@ -53,6 +71,12 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
   if (res.symmetric) {
     // The upper triangle only, the curve Hessians on it too, then one mirror.
     normal_tangent_upper(lin, fp, f / k.rho_signed, Kc);
+    if (!curved && Kc != K) {
+      // Both segments linear in X (linear, midpoint): the compact triangle
+      // is all there is; written to both triangles of K at once.
+      res.finite = scatter_symmetric(Kc, m, cols, K);
+      return res;
+    }
     if (Kc != K)
       for (int c = 0; c < m; ++c) {
         double* dst = K + kNdof * cols[c];
@@ -68,7 +92,11 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
     return res;
   }
 
-  if (normal_symmetric) {
+  if (friction && fr.anchored) {
+    // Normal and friction parts in one pass (friction.cpp).
+    friction_tangent(params, fc, fr, lin, PAd, PBd, Kc);
+  } else if (normal_symmetric) {
+    // (Friction without an anchor: T = 0 near this configuration.)
     normal_tangent_upper(lin, fp, f / k.rho_signed, Kc);
     mirror_upper(Kc, m, kNdof);
   } else {
@@ -76,7 +104,13 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
     // what is left of the closest points' motion is not symmetric.
     normal_tangent_intersecting(lin, fp, f, Kc);
   }
-  if (friction) add_friction_tangent(params, fc, fr, lin, PAd, PBd, Kc);
+  // Without the curves' second derivatives the compact matrix is all of K:
+  // its finiteness is K's.
+  bool finite_known = false;
+  if (!curved && Kc != K) {
+    for (int c = 0; c < m && res.finite; ++c) res.finite = all_finite(Kc + kNdof * c, m);
+    finite_known = true;
+  }
   if (Kc != K)  // the used columns come in whole slots: three rows at a time
     for (int c = 0; c < m; ++c) {
       double* dst = K + kNdof * cols[c];
@@ -104,7 +138,8 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
       B.seg->add_contracted_hessian(k.eta, k.n, f, K + 12 + 12 * kNdof, kNdof);
     }
   }
-  for (int c = 0; c < kNdof && res.finite; ++c) res.finite = all_finite(K + kNdof * c, kNdof);
+  if (!finite_known)
+    for (int c = 0; c < kNdof && res.finite; ++c) res.finite = all_finite(K + kNdof * c, kNdof);
   return res;
 }
 
