@@ -142,6 +142,7 @@ class Updater {
   Problem evaluate_all();
   Problem crossed_pairs();
   Problem crossed_line_pair(Item& it);
+  Problem evaluate_with(Item& it, std::vector<double> hist);
   Problem handovers();
   Problem overflow(const Item& item) const;
   Problem totals_overflow() const;
@@ -637,15 +638,23 @@ Problem Updater::crossed_pairs() {
       continue;
     const double* nc = h.data() + pair::kHistNormal;
     if (d[0] * nc[0] + d[1] * nc[1] + d[2] * nc[2] >= 0.0) continue;  // same side
-    synthetic_.push_back(std::move(h));
-    it.hist_old = synthetic_.back().data();
-    pair::PairResult res;
-    std::vector<double> line_hist;
-    double K[pair::kNdof * pair::kNdof];
-    evaluate(it, res, line_hist, want_tangent_ ? K : nullptr);
-    settle_alone(it, res, line_hist, want_tangent_ ? K : nullptr);
-    if (it.overflow) return overflow(it);
+    if (Problem pb = evaluate_with(it, std::move(h)); pb.status) return pb;
   }
+  return Problem();
+}
+
+// Evaluates a pair again with a synthetic committed history (the crossing
+// check's), kept until the update ends, and settles its result.
+Problem Updater::evaluate_with(Item& it, std::vector<double> hist) {
+  synthetic_.push_back(std::move(hist));
+  it.hist_old = synthetic_.back().data();
+  it.hist_old_len = static_cast<int>(synthetic_.back().size());
+  pair::PairResult res;
+  std::vector<double> line_hist;
+  double K[pair::kNdof * pair::kNdof];
+  evaluate(it, res, line_hist, want_tangent_ ? K : nullptr);
+  settle_alone(it, res, line_hist, want_tangent_ ? K : nullptr);
+  if (it.overflow) return overflow(it);
   return Problem();
 }
 
@@ -666,16 +675,7 @@ Problem Updater::crossed_line_pair(Item& it) {
                                 m_.committed_coords_.data(), m_.used_index_,
                                 gp.params.max_iterations, n, hl, h.data()))
     return Problem();
-  synthetic_.push_back(std::move(h));
-  it.hist_old = synthetic_.back().data();
-  it.hist_old_len = static_cast<int>(synthetic_.back().size());
-  pair::PairResult res;
-  std::vector<double> line_hist;
-  double K[pair::kNdof * pair::kNdof];
-  evaluate(it, res, line_hist, want_tangent_ ? K : nullptr);
-  settle_alone(it, res, line_hist, want_tangent_ ? K : nullptr);
-  if (it.overflow) return overflow(it);
-  return Problem();
+  return evaluate_with(it, std::move(h));
 }
 
 Problem Updater::handovers() {
