@@ -101,10 +101,11 @@ void set_given(TangentTerm& tt, const double* u) {
 TangentTerm& Segment::set_tangent(int k, double sigma, int p, int q) {
   Term& t = term_[k];
   t.nonlinear = true;
-  t.tangent.sigma = sigma;
-  t.tangent.p = p;
-  t.tangent.q = q;
-  return t.tangent;
+  TangentTerm& tt = tangent_of(k);
+  tt.sigma = sigma;
+  tt.p = p;
+  tt.q = q;
+  return tt;
 }
 
 Failure Segment::build(int kind, int start_rule, int end_rule, const double* X,
@@ -133,9 +134,10 @@ Failure Segment::build(int kind, int start_rule, int end_rule, const double* X,
   for (int k = 1; k < 4; k += 2) {
     Term& t = term_[k];
     if (!t.nonlinear) continue;
-    if (!t.tangent.evaluate(X)) return rejected(B2B_ERR_FOLDED, t.tangent.a, t.tangent.c);
-    for (int i = 0; i < 3; ++i) t.value[i] = t.tangent.value[i];
-    if (derivatives) t.tangent.jacobian();
+    TangentTerm& tt = tangent_of(k);
+    if (!tt.evaluate(X)) return rejected(B2B_ERR_FOLDED, tt.a, tt.c);
+    for (int i = 0; i < 3; ++i) t.value[i] = tt.value[i];
+    if (derivatives) tt.jacobian();
   }
   return f;
 }
@@ -276,7 +278,7 @@ void Segment::jacobians(double xi, double* P, double* Pd) const {
     }
   for (int k = 1; k < 4; k += 2) {
     if (!term_[k].nonlinear) continue;
-    const double* J = term_[k].tangent.jac;
+    const double* J = tangent_of(k).jac;
     for (int m = 0; m < 36; ++m) {
       P[m] += hb.h[k] * J[m];
       Pd[m] += hb.dh[k] * J[m];
@@ -300,7 +302,7 @@ void Segment::jacobian(double xi, double* P) const {
     for (int i = 0; i < 3; ++i) P[i + 3 * (3 * s + i)] = wgt[s];
   for (int k = 1; k < 4; k += 2) {
     if (!term_[k].nonlinear) continue;
-    const double* J = term_[k].tangent.jac;
+    const double* J = tangent_of(k).jac;
     for (int m = 0; m < 36; ++m) P[m] += hb.h[k] * J[m];
   }
 }
@@ -370,8 +372,7 @@ void Segment::add_tangent_hessians(double c1, double c3, const double* w, double
   std::memset(Z, 0, sizeof Z);
   const double coef[2] = {c1, c3};
   for (int t = 0; t < 2; ++t) {
-    const Term& term = term_[1 + 2 * t];
-    if (term.nonlinear) term.tangent.add_contracted_hessian_z(w, coef[t], Z, 9);
+    if (term_[1 + 2 * t].nonlinear) tangent_[t].add_contracted_hessian_z(w, coef[t], Z, 9);
   }
   if (upper)
     add_dzd<true>(Z, H, ld);

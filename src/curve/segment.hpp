@@ -75,14 +75,20 @@ class Segment {
 
  private:
   struct Term {
-    bool nonlinear = false;
+    bool nonlinear = false;         // a tangent term, then tangent_of(k)
     double coef[4] = {0, 0, 0, 0};  // linear: value = sum_s coef[s] x_s
-    TangentTerm tangent;            // nonlinear
     double value[3] = {0, 0, 0};
     double offset[3] = {0, 0, 0};  // a position term's value minus base_
   };
   // Order of the Hermite weights: start point, start tangent, end point, end tangent.
   Term term_[4];
+  // The nonlinear end tangents of terms 1 and 3 (the positions, terms 0 and
+  // 2, are always linear): kept apart so that a segment carries two of
+  // these large blocks, not four (a contact model builds one per segment
+  // near contact: memory goes with them).
+  TangentTerm tangent_[2];
+  TangentTerm& tangent_of(int k) { return tangent_[k / 2]; }
+  const TangentTerm& tangent_of(int k) const { return tangent_[k / 2]; }
   bool linear_kind_ = false;
   // Node x2 (slot 1, read by every kind): the positions are kept as offsets
   // to it, formed at the size of the patch (see point_from).
