@@ -108,7 +108,7 @@ void summarize_line(const pair::LineResult& lr, const double* point_info, int n,
   info[B2B_INFO_GAP] = lr.info[B2B_LINE_INFO_MIN_GAP];
   info[B2B_INFO_SYMMETRIC] = lr.info[B2B_LINE_INFO_SYMMETRIC];
   info[B2B_INFO_LINE_POINTS] = lr.info[B2B_LINE_INFO_ACTIVE_POINTS];
-  const double point_state = lr.info[B2B_LINE_INFO_POINT_FRICTION_STATE];
+  const int point_state = static_cast<int>(lr.info[B2B_LINE_INFO_POINT_FRICTION_STATE]);
   info[B2B_INFO_FRICTION_STATE] =
       lr.info[B2B_LINE_INFO_SLIP_POINTS] > 0.0 || point_state == B2B_FRICTION_SLIP ? B2B_FRICTION_SLIP
       : lr.info[B2B_LINE_INFO_STICK_POINTS] > 0.0 || point_state == B2B_FRICTION_STICK

@@ -198,7 +198,7 @@ int evaluate_line(const Settings& pst, const Settings& lst, const LineSettings& 
     if (!(val(wl) > 0.0)) continue;
     any_force = true;
     ++li[B2B_LINE_INFO_ACTIVE_POINTS];
-    const double fs = q.info[B2B_INFO_FRICTION_STATE];
+    const int fs = static_cast<int>(q.info[B2B_INFO_FRICTION_STATE]);
     if (fs == B2B_FRICTION_STICK) ++li[B2B_LINE_INFO_STICK_POINTS];
     if (fs == B2B_FRICTION_SLIP) ++li[B2B_LINE_INFO_SLIP_POINTS];
     const S wJ = wg[i] * q.J;

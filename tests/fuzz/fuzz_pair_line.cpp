@@ -258,7 +258,8 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
   {
     const double pfs = li[B2B_LINE_INFO_POINT_FRICTION_STATE];
     FUZZ_REQUIRE(pfs == 0.0 || (p.lp.friction > 0.0 && li[B2B_LINE_INFO_POINT_WEIGHT] > 0.0 &&
-                                (pfs == B2B_FRICTION_STICK || pfs == B2B_FRICTION_SLIP)),
+                                (pfs == double(B2B_FRICTION_STICK) ||
+                                 pfs == double(B2B_FRICTION_SLIP))),
                  "point friction state %g (weight %g, friction %g)", pfs,
                  li[B2B_LINE_INFO_POINT_WEIGHT], p.lp.friction);
   }
@@ -272,7 +273,8 @@ void run(const Pair& p, const double X[24], int n, const double* hist_old, int h
   FUZZ_REQUIRE(lam >= 0.0 && lam <= 1.0, "point weight %g", lam);
   const double ps = li[B2B_LINE_INFO_POINT_STATUS];
   if (p.lp.type == B2B_CONTACT_TYPE_ALL_ANGLE)
-    FUZZ_REQUIRE(ps >= B2B_CONTACT_OPEN && ps <= B2B_CONTACT_NO_NORMAL, "point status %g", ps);
+    FUZZ_REQUIRE(ps >= double(B2B_CONTACT_OPEN) && ps <= double(B2B_CONTACT_NO_NORMAL),
+                 "point status %g", ps);
   else
     FUZZ_REQUIRE(ps == -1.0 && lam == 0.0 && li[B2B_LINE_INFO_POINT_FORCE] == 0.0,
                  "contact type %d with a point part (status %g, weight %g)", p.lp.type, ps, lam);
