@@ -95,12 +95,9 @@ bool committed_line_histories(const SegmentInfo& a, const SegmentInfo& b, const 
   const double* origin = sa.base();
   for (int i = 0; i < n; ++i) {
     // B's chord parameter of the point, then the one-sided search
-    double xa[3], b0[3], c[3];
+    double xa[3];
     sa.point_from(origin, xs[i], xa, nullptr, nullptr);
-    curve::sub3(sb.start_point(), origin, b0);
-    curve::sub3(sb.end_point(), sb.start_point(), c);
-    for (int k = 0; k < 3; ++k) t[k] = xa[k] - b0[k];
-    const double eta0 = std::clamp(2.0 * curve::dot3(t, c) / (len_b * len_b) - 1.0, -1.0, 1.0);
+    const double eta0 = pair::chord_projection(sa, xs[i], sb.start_point(), sb.end_point());
     const pair::ClosestPoints cp = pair::closest_points(sa, sb, xs[i], eta0, max_iterations,
                                                         1e-9 * unit, unit, pair::kFixXi);
     double xb[3], d[3];

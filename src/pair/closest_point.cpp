@@ -207,5 +207,15 @@ ClosestPoints closest_points(const curve::Segment& A, const curve::Segment& B, d
   return r;
 }
 
+double chord_projection(const curve::Segment& A, double xi, const double* b0, const double* b1) {
+  double p[3], c[3];
+  A.point_from(b0, xi, p, nullptr, nullptr);  // x_A(xi) - b0
+  curve::sub3(b1, b0, c);
+  const double cc = curve::dot3(c, c);
+  if (!(cc > 0.0)) return 0.0;
+  const double t = 2.0 * curve::dot3(p, c) / cc - 1.0;
+  return std::fmin(1.0, std::fmax(-1.0, t));
+}
+
 }  // namespace pair
 }  // namespace b2b

@@ -24,6 +24,12 @@ struct ClosestPoints {
 void chord_start(const double* a0, const double* a1, const double* b0, const double* b1,
                  double scale, double* xi, double* eta);
 
+// The parameter of B's chord b0-b1 nearest to x_A(xi), clamped to [-1, 1]
+// (0 for a chord of no length): where a one-sided search for the
+// projection of A's point xi onto B starts (a line-contact point), since
+// the chords' own closest points are undefined for parallel chords.
+double chord_projection(const curve::Segment& A, double xi, const double* b0, const double* b1);
+
 // Which parameters closest_points holds at their start value (an end contact:
 // a node of A or of B, doc/contact-element.md section 14).
 enum FixedParameter : unsigned { kFixNone = 0, kFixXi = 1, kFixEta = 2 };

@@ -20,26 +20,29 @@ inline double col_dot(const double* M, int c, const double* v) { return curve::d
 
 }  // namespace
 
+PairFailure build_pair(const SegmentInput& A, const SegmentInput& B, curve::Segment built[2],
+                       SegmentRef refs[2]) {
+  PairFailure fail;
+  const SegmentInput* in[2] = {&A, &B};
+  for (int b = 0; b < 2; ++b) {
+    const SegmentInput& s = *in[b];
+    fail.segment = built[b].build(s.kind, s.start_rule, s.end_rule, s.X, s.unit_tangents, true);
+    if (fail.segment.status) {
+      fail.status = fail.segment.status;
+      fail.beam = b;
+      return fail;
+    }
+    refs[b] = SegmentRef{&built[b], s.kind, s.start_rule, s.end_rule, s.radius, s.X, s.unit_tangents};
+  }
+  return fail;
+}
+
 PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const SegmentInput& B,
                           const double* hist_old, PairResult& out, double* K, Ends ends) {
-  PairFailure fail;
-  curve::Segment sa, sb;
-  fail.segment = sa.build(A.kind, A.start_rule, A.end_rule, A.X, A.unit_tangents, true);
-  if (fail.segment.status) {
-    fail.status = fail.segment.status;
-    fail.beam = 0;
-    return fail;
-  }
-  fail.segment = sb.build(B.kind, B.start_rule, B.end_rule, B.X, B.unit_tangents, true);
-  if (fail.segment.status) {
-    fail.status = fail.segment.status;
-    fail.beam = 1;
-    return fail;
-  }
-  evaluate_built(params,
-                 SegmentRef{&sa, A.kind, A.start_rule, A.end_rule, A.radius, A.X, A.unit_tangents},
-                 SegmentRef{&sb, B.kind, B.start_rule, B.end_rule, B.radius, B.X, B.unit_tangents},
-                 hist_old, out, K, ends);
+  curve::Segment built[2];
+  SegmentRef refs[2];
+  const PairFailure fail = build_pair(A, B, built, refs);
+  if (!fail.status) evaluate_built(params, refs[0], refs[1], hist_old, out, K, ends);
   return fail;
 }
 

@@ -41,6 +41,12 @@ struct PairFailure {
   curve::Failure segment;
 };
 
+// Builds both segments of a pair (with derivatives) into built and their
+// references into refs; a refused one is the failure (its status, beam and
+// slots). Inputs are valid (checked at the C boundary).
+PairFailure build_pair(const SegmentInput& A, const SegmentInput& B, curve::Segment built[2],
+                       SegmentRef refs[2]);
+
 // Builds both segments, then evaluate_built(). Inputs are valid (checked at
 // the C boundary).
 // ends: an end contact (a node of A or B held, Ends); default the free pair.

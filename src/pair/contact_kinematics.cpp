@@ -35,18 +35,6 @@ bool owns(double t, double speed, double length, bool beam_ends_here) {
 // segment's (half its chord length), a cusp (b2b_pair.h, PARALLEL).
 bool at_cusp(double speed, double chord_length) { return !(speed > 0.005 * chord_length); }
 
-// The parameter of B's chord b0-b1 nearest to x_A(xi), clamped to [-1, 1].
-double chord_projection(const curve::Segment& sa, double xi, const double* b0,
-                        const double* b1) {
-  double p[3], c[3];
-  sa.point_from(b0, xi, p, nullptr, nullptr);  // x_A(xi) - b0
-  sub3(b1, b0, c);
-  const double cc = dot3(c, c);
-  if (!(cc > 0.0)) return 0.0;
-  const double t = 2.0 * dot3(p, c) / cc - 1.0;
-  return std::fmin(1.0, std::fmax(-1.0, t));
-}
-
 }  // namespace
 
 int contact_kinematics(const Params& params, const SegmentRef& A, const SegmentRef& B,

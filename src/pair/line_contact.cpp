@@ -243,21 +243,11 @@ void evaluate_line(const Params& params, const SegmentRef& A, const SegmentRef& 
 PairFailure evaluate_line_pair(const Params& params, const SegmentInput& A,
                                const SegmentInput& B, int n_points, const double* hist_old,
                                double* hist_new, LineResult& out, double* point_info, double* K) {
-  PairFailure fail;
   curve::Segment built[2];
-  const SegmentInput* in[2] = {&A, &B};
-  for (int b = 0; b < 2; ++b) {
-    const SegmentInput& s = *in[b];
-    fail.segment = built[b].build(s.kind, s.start_rule, s.end_rule, s.X, s.unit_tangents, true);
-    if (fail.segment.status) {
-      fail.status = fail.segment.status;
-      fail.beam = b;
-      return fail;
-    }
-  }
-  const SegmentRef a{&built[0], A.kind, A.start_rule, A.end_rule, A.radius, A.X, A.unit_tangents};
-  const SegmentRef b{&built[1], B.kind, B.start_rule, B.end_rule, B.radius, B.X, B.unit_tangents};
-  evaluate_line(params, a, b, n_points, hist_old, hist_new, out, point_info, K);
+  SegmentRef refs[2];
+  const PairFailure fail = build_pair(A, B, built, refs);
+  if (!fail.status)
+    evaluate_line(params, refs[0], refs[1], n_points, hist_old, hist_new, out, point_info, K);
   return fail;
 }
 
