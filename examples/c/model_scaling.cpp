@@ -352,8 +352,52 @@ std::string load_average() {  // the first three fields of /proc/loadavg
 struct ModelRun {
   double t_first = 0, t_reuse[2] = {0, 0};  // seconds
   int candidates = 0, near = 0, active = 0, parallel = 0;
-  double mem_bytes = -1;                     // peak delta
+  double mem_bytes = -1;       // peak delta: set-up and first update
+  double mem_all_bytes = -1;   // peak delta: set-up and all updates
+  double pair_s = -1;  // one b2b_pair_eval (residual + tangent) on an active contact, seconds
 };
+
+// The cost of one pair as pair_cost_study measures it (b2b_pair_eval with
+// the tangent, on active contacts, best of several rounds), on the scene's
+// own active contacts at coordinates x: up to 256 of those between interior
+// segments (their patches have four nodes), fresh histories. The reusing
+// update is compared with evaluated pairs x this (item 3 of issue 20): most
+// evaluated pairs are not active and cost less, so a ratio near 1 leaves
+// the update's own bookkeeping little room.
+double active_pair_cost(b2b_model* m, const b2b_params* params, const double* x) {
+  char msg[256];
+  int n = 0;
+  check(b2b_model_contact_count(m, &n, msg, sizeof msg), "contact_count", msg);
+  std::vector<std::vector<double>> patches;
+  for (int k = 0; k < n && patches.size() < 256; ++k) {
+    int nodes[8], pair[4];
+    double info[32], residual[24];
+    check(b2b_model_get_contact(m, k, nodes, pair, info, residual, nullptr, 0, msg, sizeof msg),
+          "get_contact", msg);
+    if (*std::min_element(nodes, nodes + 8) < 0) continue;
+    std::vector<double> X(24);
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 3; ++i) X[3 * j + i] = x[3 * nodes[j] + i];
+    patches.push_back(X);
+  }
+  if (patches.empty()) return -1;
+  const int segments[6] = {B2B_CURVE_HERMITE_NODAL, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR,
+                           B2B_CURVE_HERMITE_NODAL, B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR};
+  const double radii[2] = {kRadius, kRadius};
+  double fresh[16] = {0}, hist_new[16], info[32], R[24], K[576];
+  int hist_len = 0, status = 0;
+  check(b2b_params_history_size(params, &hist_len, msg, sizeof msg), "history_size", msg);
+  double best = HUGE_VAL;
+  for (int round = 0; round < 5; ++round) {
+    const double t0 = now_s();
+    for (const std::vector<double>& X : patches)
+      check(b2b_pair_eval(params, segments, X.data(), nullptr, radii, fresh, hist_new, hist_len,
+                          &status, info, R, K, 24, msg, sizeof msg),
+            "b2b_pair_eval", msg);
+    best = std::min(best, (now_s() - t0) / static_cast<double>(patches.size()));
+  }
+  return best;
+}
 
 ModelRun run_model(const Scene& sc, const b2b_params* params, int reps, bool peak_ok) {
   char msg[256];
@@ -395,10 +439,9 @@ ModelRun run_model(const Scene& sc, const b2b_params* params, int reps, bool pea
   check(b2b_model_update(m, sc.x.data(), 3, n_nodes, 1, msg, sizeof msg), "b2b_model_update",
         msg);
   r.t_first = now_s() - t0;
-  const long hwm = status_kb("VmHWM:");
-  if (peak_ok && rss0 > 0 && hwm > 0)
-    r.mem_bytes = 1024.0 * static_cast<double>(hwm - rss0);
-
+  const long hwm_first = status_kb("VmHWM:");
+  if (peak_ok && rss0 > 0 && hwm_first > 0)
+    r.mem_bytes = 1024.0 * static_cast<double>(hwm_first - rss0);
   int counts[16], builds;
   double totals[8];
   check(b2b_model_stats(m, counts, totals, msg, sizeof msg), "b2b_model_stats", msg);
@@ -428,6 +471,13 @@ ModelRun run_model(const Scene& sc, const b2b_params* params, int reps, bool pea
   if (std::memcmp(last_counts[0], last_counts[1], sizeof last_counts[0]) != 0 ||
       std::memcmp(last_totals[0], last_totals[1], sizeof last_totals[0]) != 0)
     fail("1 and 2 threads give different counts or totals");
+  // The peak over the model's set-up, its first update and the reusing
+  // ones on 1 and 2 threads (each holds the last update's results while it
+  // makes its own).
+  const long hwm = status_kb("VmHWM:");
+  if (peak_ok && rss0 > 0 && hwm > 0)
+    r.mem_all_bytes = 1024.0 * static_cast<double>(hwm - rss0);
+  r.pair_s = active_pair_cost(m, params, moved[(reps - 1) % 2].data());
   r.near = last_counts[0][B2B_COUNT_EVALUATED];
   r.active = last_counts[0][B2B_COUNT_ACTIVE];
   r.parallel = last_counts[0][B2B_COUNT_PARALLEL];
@@ -555,6 +605,10 @@ int main(int argc, char** argv) {
 
   std::vector<Row> rows;
   double last_mem_per_seg[2] = {-1, -1};
+  // A warm-up model run, not reported: it loads the library's code and
+  // starts the threads, whose pages would otherwise count as the first
+  // model's memory.
+  if (!search_only) run_model(network(1000, 999), params, 1, false);
   for (int sc_id = 0; sc_id < 2; ++sc_id)
     for (int n : sizes) {
       if (!(scene_mask & (1 << sc_id))) continue;
@@ -603,7 +657,7 @@ int main(int argc, char** argv) {
         row.model = run_model(sc, params, model_reps, peak_ok);
         if (row.model.candidates != row.pairs)
           fail("model candidates differ from the BVH on the same boxes");
-        if (row.model.mem_bytes > 0) last_mem_per_seg[sc_id] = row.model.mem_bytes / n;
+        if (row.model.mem_all_bytes > 0) last_mem_per_seg[sc_id] = row.model.mem_all_bytes / n;
       }
       rows.push_back(row);
       std::fflush(stdout);
@@ -635,19 +689,31 @@ int main(int argc, char** argv) {
   std::printf("\nb2b_model_update (with tangents): the first (search build + evaluation, "
               "default threads), then reusing the candidates on moved coordinates\n\n");
   std::printf("| scene | segments | evaluated/seg | active | parallel | first update [ms] "
-              "| reuse, 1 thread [ms] | reuse, 2 threads [ms] | speed-up | memory [B/seg] |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+              "| reuse, 1 thread [ms] | reuse, 2 threads [ms] | speed-up | memory [B/seg] "
+              "| memory, all updates [B/seg] | active pair [ns] | throughput ratio, 1 thread | throughput ratio, 2 threads |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const Row& r : rows) {
     if (r.model_skip) {
-      std::printf("| %s | %d | %s | | | | | | | |\n", r.scene, r.n, r.model_skip);
+      std::printf("| %s | %d | %s | | | | | | | | | | | |\n", r.scene, r.n, r.model_skip);
       continue;
     }
-    char mem[32] = "-";
+    char mem[32] = "-", mem_all[32] = "-", pair_ns[32] = "-", ratio1[32] = "-", ratio2[32] = "-";
     if (r.model.mem_bytes >= 0) std::snprintf(mem, sizeof mem, "%.0f", r.model.mem_bytes / r.n);
-    std::printf("| %s | %d | %.2f | %d | %d | %.1f | %.1f | %.1f | %.2f | %s |\n", r.scene, r.n,
-                static_cast<double>(r.model.near) / r.n, r.model.active, r.model.parallel,
-                1e3 * r.model.t_first, 1e3 * r.model.t_reuse[0], 1e3 * r.model.t_reuse[1],
-                r.model.t_reuse[0] / r.model.t_reuse[1], mem);
+    if (r.model.mem_all_bytes >= 0)
+      std::snprintf(mem_all, sizeof mem_all, "%.0f", r.model.mem_all_bytes / r.n);
+    if (r.model.pair_s > 0) {
+      // The reusing update against evaluated pairs x the active pair's cost
+      // / threads (it searches nothing).
+      const double pairs = static_cast<double>(r.model.near) * r.model.pair_s;
+      std::snprintf(pair_ns, sizeof pair_ns, "%.0f", 1e9 * r.model.pair_s);
+      std::snprintf(ratio1, sizeof ratio1, "%.2f", r.model.t_reuse[0] / pairs);
+      std::snprintf(ratio2, sizeof ratio2, "%.2f", r.model.t_reuse[1] / (pairs / 2));
+    }
+    std::printf("| %s | %d | %.2f | %d | %d | %.1f | %.1f | %.1f | %.2f | %s | %s | %s | %s | %s |\n",
+                r.scene, r.n, static_cast<double>(r.model.near) / r.n, r.model.active,
+                r.model.parallel, 1e3 * r.model.t_first, 1e3 * r.model.t_reuse[0],
+                1e3 * r.model.t_reuse[1], r.model.t_reuse[0] / r.model.t_reuse[1], mem, mem_all,
+                pair_ns, ratio1, ratio2);
   }
 
   // Exponents: log-log least squares over the sizes run.

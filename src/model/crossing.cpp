@@ -13,24 +13,19 @@
 namespace b2b {
 namespace model {
 
-void committed_motion(const BeamTable& table, const double* coords, const double* committed,
-                      const NodeIndex& used_index, CommittedMotion& out) {
-  const int n = table.segment_count();
-  out.boxes.resize(n);
-  out.moved.resize(n);
-  for (int s = 0; s < n; ++s) {
-    const SegmentInfo& info = table.segment(s);
-    out.boxes[s] = segment_box(info, committed, used_index);
-    double moved = 0.0;
-    for (int node : info.nodes) {
-      if (node < 0) continue;
-      const size_t o = used_index.offset(node);
-      double d[3];
-      curve::sub3(coords + o, committed + o, d);
-      moved = std::max(moved, curve::norm3(d));
-    }
-    out.moved[s] = moved;
+void segment_motion(const BeamTable& table, int s, const double* coords, const double* committed,
+                    const NodeIndex& used_index, CommittedMotion& out) {
+  const SegmentInfo& info = table.segment(s);
+  out.boxes[s] = segment_box(info, committed, used_index);
+  double moved = 0.0;
+  for (int node : info.nodes) {
+    if (node < 0) continue;
+    const size_t o = used_index.offset(node);
+    double d[3];
+    curve::sub3(coords + o, committed + o, d);
+    moved = std::max(moved, curve::norm3(d));
   }
+  out.moved[s] = moved;
 }
 
 bool may_have_crossed(const CommittedMotion& cm, int a, int b, double rho) {

@@ -32,9 +32,11 @@ struct CommittedMotion {
   std::vector<double> moved;
 };
 
-// coords, committed: the used nodes' current and committed coordinates.
-void committed_motion(const BeamTable& table, const double* coords, const double* committed,
-                      const NodeIndex& used_index, CommittedMotion& out);
+// Segment s's entries of out (sized for every segment by the caller; one
+// segment per call, so that the update fills them in parallel). coords,
+// committed: the used nodes' current and committed coordinates.
+void segment_motion(const BeamTable& table, int s, const double* coords, const double* committed,
+                    const NodeIndex& used_index, CommittedMotion& out);
 
 // Whether the pair (a, b), with current closest points at axis distance rho,
 // can have crossed since the commit: its segments moved by at least rho

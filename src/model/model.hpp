@@ -17,6 +17,7 @@
 #include "beam_table.hpp"
 #include "contact_state.hpp"
 #include "search.hpp"
+#include "update_workspace.hpp"
 
 namespace b2b {
 namespace model {
@@ -158,6 +159,7 @@ class Model {
   // filled at their exact size: gathering them into one array would hold
   // them twice at the update's peak.
   std::vector<std::vector<double>> tangents_;
+  UpdateWorkspace workspace_;  // the update's buffers, reused (update_workspace.hpp)
   int counts_[16] = {0};
   double totals_[8] = {0};
 

@@ -1,13 +1,16 @@
 // Model::update: one Newton iteration of the host.
 //   1. the current coordinates of the beams' nodes (checked)
 //   2. the broad phase, rebuilt only when a node has left its skin
-//   3. the near pairs among the candidates (boxes within contact reach), plus
-//      the contacts of the last commit
-//   4. their segments, built once, in parallel
-//   5. the contact element on every such pair, in parallel, in fixed chunks
-//   6. handover: a committed contact whose point left its pair follows it,
+//   3. the element on every candidate within contact reach and on the
+//      contacts of the last commit, in parallel, in fixed chunks of the
+//      candidate list, on segments built by each thread's small cache
+//      (segment_cache.hpp) as the pairs ask for them; what a pair leaves is
+//      streamed into its chunk: its status is counted, and only a pair that
+//      a later stage reads (one with a record, pair_record.hpp) is kept
+//   4. the crossing check (crossing.hpp) on the kept pairs
+//   5. handover: a committed contact whose point left its pair follows it,
 //      hop by hop, with its committed history mapped across each joint
-//   7. the active set, sorted by pair, and the trial histories
+//   6. the active set, sorted by pair, and the trial histories
 // Nothing of the model changes unless all of it succeeds.
 #include <algorithm>
 #include <atomic>
@@ -31,6 +34,7 @@
 #include "line_pair.hpp"
 #include "model.hpp"
 #include "pair_record.hpp"
+#include "segment_cache.hpp"
 #include "segment_geometry.hpp"
 
 namespace b2b {
@@ -38,7 +42,9 @@ namespace model {
 
 namespace {
 
-constexpr int kChunk = 32;  // pairs per parallel work item
+// Work items (candidates, then committed contacts that are not candidates)
+// per chunk of the parallel evaluation.
+constexpr int kChunk = 64;
 // Below these sizes a parallel region costs more than it saves (starting a
 // team, and idle threads spinning on a busy machine): run on one thread.
 // (Unused without OpenMP.)
@@ -54,18 +60,32 @@ int exit_direction(double t) {
   return 0;
 }
 
+// The entry of counts[] (B2B_COUNT_*) of a pair status.
+int count_slot(int status) {
+  switch (status) {
+    case B2B_CONTACT_ACTIVE: return B2B_COUNT_ACTIVE;
+    case B2B_CONTACT_OPEN: return B2B_COUNT_OPEN;
+    case B2B_CONTACT_OUTSIDE: return B2B_COUNT_OUTSIDE;
+    case B2B_CONTACT_PARALLEL: return B2B_COUNT_PARALLEL;
+    case B2B_CONTACT_NOT_CONVERGED: return B2B_COUNT_NOT_CONVERGED;
+    default: return B2B_COUNT_NO_NORMAL;
+  }
+}
+
 }  // namespace
 
 class Updater {
  public:
   Updater(Model& m, const double* x, int ldx, const double* u, int ldu, bool want_tangent)
-      : m_(m), x_(x), u_(u), ldx_(ldx), ldu_(ldu), want_tangent_(want_tangent) {}
+      : m_(m), ws_(m.workspace_), x_(x), u_(u), ldx_(ldx), ldu_(ldu),
+        want_tangent_(want_tangent), margin_(m.effective_margin()) {}
   Problem run();
 
  private:
-  // One pair to evaluate, and its outcome. Kept small: a bundle evaluates
-  // ~85 pairs a segment and ~1% carry force; what the later stages read of
-  // a pair is in its record (pair_record.hpp), which most pairs lack.
+  // One evaluated pair that a later stage reads: one with a record
+  // (pair_record.hpp: active, open, or outside with a committed history) or
+  // whose outputs overflowed. Every other evaluated pair leaves only its
+  // count.
   struct Item {
     int a, b, gp;
     int8_t status = -1;     // B2B_CONTACT_* of its evaluation
@@ -79,35 +99,52 @@ class Updater {
     const double* tangent = nullptr;   // ACTIVE, with tangents: in tangent_blocks_
     uint64_t key() const { return pair_key(a, b); }
   };
+  // What one chunk of the evaluation leaves (filled by the thread that
+  // evaluates it, so nothing of it depends on the threads).
+  struct ChunkOut {
+    std::vector<Item> kept;  // in work-item order
+    size_t kept_candidates = 0;  // of them, from candidates (the rest: extras)
+    int counts[B2B_MODEL_COUNTS_LEN] = {0};  // the pairs it evaluated and did not keep
+    int evaluated = 0, near = 0;
+    int bad_segment = -1;  // the lowest segment that could not be built (-1: none)
+    curve::Failure fail;   // and why
+  };
   Model& m_;
+  UpdateWorkspace& ws_;
   const double* x_;
   const double* u_;  // displacements added to x_ (nullptr: x_ is current)
   int ldx_, ldu_;
   bool want_tangent_;
+  double margin_;  // the search margin (Model::effective_margin(), O(segments))
   std::vector<double> cur_;
-  std::vector<Box> boxes_;
-  // Since the last commit (crossing.hpp): committed boxes and motion, and
-  // each segment's box swept from its committed to its current position.
+  // Since the last commit (crossing.hpp): committed boxes and motion
+  // (ws_.motion), and each segment's box swept from its committed to its
+  // current position (ws_.swept).
   bool has_committed_ = false;
-  CommittedMotion motion_;
-  std::vector<Box> swept_;
   // Histories made for pairs that crossed (committed normals; for line
   // pairs committed_line_histories): their hist_old.
   std::vector<std::vector<double>> synthetic_;
   std::vector<std::pair<int, int>> new_candidates_;
   bool rebuilt_ = false;
-  std::vector<int> slot_;                 // segment -> index into built_ (-1: not built)
-  std::vector<curve::Segment> built_;
-  std::vector<double> built_X_;           // their patches, 12 each (for the FD tangent)
-  std::vector<Item> items_;
+  // Committed active contacts that are not candidates (evaluated whatever
+  // the boxes say), in key order.
+  std::vector<const StoredPair*> extras_;
+  std::vector<Item> items_;  // the kept pairs, sorted by key
+  // Pairs evaluated and not kept, by B2B_COUNT_* of their status; all
+  // evaluated pairs; candidates within contact reach.
+  int unkept_[B2B_MODEL_COUNTS_LEN] = {0};
+  int evaluated_ = 0, near_ = 0;
   // The items' records and tangents in blocks of exact size at stable
   // addresses: one per chunk of the parallel evaluation, then one per pair
   // evaluated again after it (crossing, handover). No block is copied into
   // another: the tangents go to the model as they are.
   std::vector<std::vector<double>> records_, tangent_blocks_;
   std::vector<double> fresh_;             // zeros: a fresh history
-  int hops_ = 0, lost_ = 0, near_ = 0;
-  const std::vector<Box>& search_boxes() const { return has_committed_ ? swept_ : boxes_; }
+  int hops_ = 0, lost_ = 0;
+  const std::vector<Box>& search_boxes() const { return has_committed_ ? ws_.swept : ws_.boxes; }
+  const std::vector<std::pair<int, int>>& candidates() const {
+    return rebuilt_ ? new_candidates_ : m_.candidates_;
+  }
 
   int nt() const {
 #ifdef B2B_HAVE_OPENMP
@@ -117,32 +154,45 @@ class Updater {
 #endif
   }
   Problem gather();
+  Problem gather_node(size_t u);
+  void sweep_boxes();
   void broad_phase();
-  void near_pairs();
-  Problem build_segments();
-  Problem build_one(int s);
-  pair::SegmentRef ref(int s) const {
-    const SegmentInfo& info = m_.table_.segment(s);
-    static const double kNoTangents[6] = {0, 0, 0, 0, 0, 0};
-    return pair::SegmentRef{&built_[slot_[s]], info.kind,   info.start_rule,
-                            info.end_rule,     info.radius, &built_X_[12 * slot_[s]],
-                            kNoTangents};
-  }
-  SegmentEnds ends_of(int s) const;
+  bool near(int a, int b, int gp) const;
+  // Work item k of the evaluation (a candidate, then an extra) as an item
+  // to evaluate: false if it is not evaluated (apart and no committed
+  // contact); *is_near: a candidate within contact reach.
+  bool work_item(size_t k, Item& it, bool* is_near) const;
   // The element on one pair: res, and a line pair's new histories in
-  // line_hist (buffers of the caller, reused from pair to pair).
-  void evaluate(const Item& item, pair::PairResult& res, std::vector<double>& line_hist,
-                double* K) const;
-  void evaluate_line(const Item& item, pair::PairResult& res, std::vector<double>& line_hist,
-                     double* K) const;
+  // line_hist (buffers of the caller, reused from pair to pair). Its
+  // segments come from cache; false (fail, *bad: the segment) when one
+  // cannot be built: both are asked for, so the lower failing segment of
+  // the pair is the one reported.
+  bool evaluate(const Item& item, SegmentCache& cache, pair::PairResult& res,
+                std::vector<double>& line_hist, double* K, curve::Failure& fail,
+                int* bad) const;
+  void evaluate_line(const Item& item, const pair::SegmentRef& A, const pair::SegmentRef& B,
+                     pair::PairResult& res, std::vector<double>& line_hist, double* K) const;
+  pair::SegmentRef ref(int s, const SegmentCache::Entry& e) const;
+  SegmentEnds ends_of(int s) const;
   int64_t settle(Item& item, const pair::PairResult& res, const std::vector<double>& line_hist,
                  std::vector<double>& recs) const;
   void settle_alone(Item& item, const pair::PairResult& res, const std::vector<double>& line_hist,
                     const double* K);
+  // A pair evaluated after the parallel stage, on the serial cache; a
+  // segment that cannot be built is the Problem.
+  Problem evaluate_serial(const Item& item, pair::PairResult& res,
+                          std::vector<double>& line_hist, double* K);
+  Problem segment_problem(int s, const curve::Failure& f) const;
   Problem evaluate_all();
+  void evaluate_chunk(int c, size_t n_work, SegmentCache& cache, ChunkOut& out,
+                      std::vector<double>& recs, std::vector<double>& Ks,
+                      std::vector<double>& line_hist, pair::PairResult& res, double* K);
   Problem crossed_pairs();
   Problem crossed_line_pair(Item& it);
   Problem evaluate_with(Item& it, std::vector<double> hist);
+  // The status the evaluation gave pair (a, b), which it did not keep, or
+  // -1 if it did not evaluate it (for a handover onto it).
+  Problem unkept_status(int a, int b, int* status);
   Problem handovers();
   Problem overflow(const Item& item) const;
   Problem totals_overflow() const;
@@ -169,10 +219,8 @@ Problem Updater::run() {
     pb = gather();
     if (!pb.status) {
       broad_phase();
-      near_pairs();
-      pb = build_segments();
+      pb = evaluate_all();
     }
-    if (!pb.status) pb = evaluate_all();
     if (!pb.status) pb = crossed_pairs();
     if (!pb.status) pb = handovers();
     if (!pb.status) pb = totals_overflow();
@@ -192,91 +240,143 @@ Problem Updater::run() {
   return pb;
 }
 
-Problem Updater::gather() {
+// Used node u's current coordinates into cur_, or the Problem with them.
+Problem Updater::gather_node(size_t u) {
   Problem pb;
-  const std::vector<int>& used = m_.used_nodes_;
-  cur_.resize(3 * used.size());
-  for (size_t u = 0; u < used.size(); ++u) {
-    const double* p = x_ + static_cast<size_t>(ldx_) * used[u];
-    const double* d = u_ ? u_ + static_cast<size_t>(ldu_) * used[u] : nullptr;
-    for (int i = 0; i < 3; ++i) {
-      if (!std::isfinite(p[i]) || std::fabs(p[i]) > B2B_COORD_MAX) {
-        pb.status = std::isfinite(p[i]) ? B2B_ERR_RANGE : B2B_ERR_NONFINITE;
-        pb.what = Problem::What::Coordinate;
-        pb.node = used[u];
+  const int node = m_.used_nodes_[u];
+  const double* p = x_ + static_cast<size_t>(ldx_) * node;
+  const double* d = u_ ? u_ + static_cast<size_t>(ldu_) * node : nullptr;
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(p[i]) || std::fabs(p[i]) > B2B_COORD_MAX) {
+      pb.status = std::isfinite(p[i]) ? B2B_ERR_RANGE : B2B_ERR_NONFINITE;
+      pb.what = Problem::What::Coordinate;
+      pb.node = node;
+      pb.axis = i;
+      pb.value = p[i];
+      return pb;
+    }
+    double c = p[i];
+    if (d) {
+      // reference + displacement: the one rounding update(x + u) has too
+      if (!std::isfinite(d[i])) {
+        pb.status = B2B_ERR_NONFINITE;
+        pb.what = Problem::What::Displacement;
+        pb.node = node;
         pb.axis = i;
-        pb.value = p[i];
+        pb.value = d[i];
         return pb;
       }
-      double c = p[i];
-      if (d) {
-        // reference + displacement: the one rounding update(x + u) has too
-        if (!std::isfinite(d[i])) {
-          pb.status = B2B_ERR_NONFINITE;
-          pb.what = Problem::What::Displacement;
-          pb.node = used[u];
-          pb.axis = i;
-          pb.value = d[i];
-          return pb;
-        }
-        c = p[i] + d[i];
-        if (!(std::fabs(c) <= B2B_COORD_MAX)) {  // also an overflow to inf
-          pb.status = B2B_ERR_RANGE;
-          pb.what = Problem::What::CurrentCoordinate;
-          pb.node = used[u];
-          pb.axis = i;
-          pb.value = c;
-          return pb;
-        }
+      c = p[i] + d[i];
+      if (!(std::fabs(c) <= B2B_COORD_MAX)) {  // also an overflow to inf
+        pb.status = B2B_ERR_RANGE;
+        pb.what = Problem::What::CurrentCoordinate;
+        pb.node = node;
+        pb.axis = i;
+        pb.value = c;
+        return pb;
       }
-      cur_[3 * u + i] = c;
     }
+    cur_[3 * u + i] = c;
   }
-  pb = m_.check_elements(cur_.data());  // O(n), before any search
+  return pb;
+}
+
+Problem Updater::gather() {
+  const int n_used = static_cast<int>(m_.used_nodes_.size());
+  // The buffer of the update before last (the model keeps the last one's).
+  cur_.swap(ws_.coords);
+  cur_.resize(3 * static_cast<size_t>(n_used));
+  // In parallel; the first bad node in node order is the one reported (a
+  // second pass, on the error path only, finds it).
+  std::atomic<bool> bad{false};
+#ifdef B2B_HAVE_OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt()) if (n_used >= kParallelSegments)
+#endif
+  for (int u = 0; u < n_used; ++u)
+    if (gather_node(static_cast<size_t>(u)).status) bad.store(true, std::memory_order_relaxed);
+  if (bad)
+    for (int u = 0; u < n_used; ++u)
+      if (Problem pb = gather_node(static_cast<size_t>(u)); pb.status) return pb;
+  Problem pb = m_.check_elements(cur_.data());  // O(n), before any search
   if (pb.status) return pb;
   bool self = false;
   for (const Beam& b : m_.beams_) self = self || b.self_contact;
   if (self && !m_.table_.arcs_measured())
     m_.table_.measure_arcs(m_.beams_, cur_.data(), m_.used_index_);
+  sweep_boxes();
+  return pb;
+}
+
+// Each segment's box; after a commit also its committed box, how far its
+// nodes moved since, and the union of the two.
+void Updater::sweep_boxes() {
   const int n = m_.table_.segment_count();
-  boxes_.resize(n);
-  for (int s = 0; s < n; ++s)
-    boxes_[s] = segment_box(m_.table_.segment(s), cur_.data(), m_.used_index_);
+  std::vector<Box>& boxes = ws_.boxes;
+  boxes.resize(n);
   has_committed_ = !m_.committed_coords_.empty();
   if (has_committed_) {
-    committed_motion(m_.table_, cur_.data(), m_.committed_coords_.data(), m_.used_index_,
-                     motion_);
-    swept_ = boxes_;
-    for (int s = 0; s < n; ++s)
-      for (int i = 0; i < 3; ++i) {
-        swept_[s].lo[i] = std::min(swept_[s].lo[i], motion_.boxes[s].lo[i]);
-        swept_[s].hi[i] = std::max(swept_[s].hi[i], motion_.boxes[s].hi[i]);
-      }
+    ws_.motion.boxes.resize(n);
+    ws_.motion.moved.resize(n);
+    ws_.swept.resize(n);
   }
-  return pb;
+  const BeamTable& table = m_.table_;
+  const double* cur = cur_.data();
+  const double* committed = m_.committed_coords_.data();
+  const NodeIndex& used = m_.used_index_;
+  const bool has_committed = has_committed_;
+  CommittedMotion& motion = ws_.motion;
+  std::vector<Box>& swept = ws_.swept;
+#ifdef B2B_HAVE_OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt()) if (n >= kParallelSegments)
+#endif
+  for (int s = 0; s < n; ++s) {
+    boxes[s] = segment_box(table.segment(s), cur, used);
+    if (!has_committed) continue;
+    segment_motion(table, s, cur, committed, used, motion);
+    for (int i = 0; i < 3; ++i) {
+      swept[s].lo[i] = std::min(boxes[s].lo[i], motion.boxes[s].lo[i]);
+      swept[s].hi[i] = std::max(boxes[s].hi[i], motion.boxes[s].hi[i]);
+    }
+  }
 }
 
 // Verlet skin: the candidates stay valid until a node has moved more than
 // half the margin since they were found (segment_geometry.hpp says why the
 // boxes are grown by r + g0/2 + 4s/3 for that).
 void Updater::broad_phase() {
-  const double s = m_.effective_margin();
+  const double s = margin_;
   bool rebuild = m_.build_coords_.size() != cur_.size();
-  for (size_t k = 0; !rebuild && k < cur_.size(); k += 3) {
-    const double* p = &cur_[k];
-    const double* q = &m_.build_coords_[k];
-    const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                      (p[2] - q[2]) * (p[2] - q[2]);
-    rebuild = d2 > 0.25 * s * s;
+  if (!rebuild) {
+    const int n_used = static_cast<int>(cur_.size() / 3);
+    const double* cur = cur_.data();
+    const double* built = m_.build_coords_.data();
+    int moved = 0;
+#ifdef B2B_HAVE_OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt()) reduction(| : moved) \
+    if (n_used >= kParallelSegments)
+#endif
+    for (int u = 0; u < n_used; ++u) {
+      const double* p = cur + 3 * static_cast<size_t>(u);
+      const double* q = built + 3 * static_cast<size_t>(u);
+      const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                        (p[2] - q[2]) * (p[2] - q[2]);
+      moved |= d2 > 0.25 * s * s;
+    }
+    rebuild = moved != 0;
   }
   if (!rebuild) return;
   rebuilt_ = true;
-  const int n = static_cast<int>(boxes_.size());
+  const int n = static_cast<int>(ws_.boxes.size());
   const std::vector<Box>& swept = search_boxes();
   std::vector<Box>& grown = m_.search_boxes_;
   grown.resize(n);
+  const BeamTable& table = m_.table_;
+  const double g0_half = 0.5 * m_.g0_max_;
+#ifdef B2B_HAVE_OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt()) if (n >= kParallelSegments)
+#endif
   for (int k = 0; k < n; ++k) {
-    const double g = m_.table_.segment(k).radius + 0.5 * m_.g0_max_ + 4.0 * s / 3.0;
+    const double g = table.segment(k).radius + g0_half + 4.0 * s / 3.0;
     for (int i = 0; i < 3; ++i) {
       grown[k].lo[i] = swept[k].lo[i] - g;
       grown[k].hi[i] = swept[k].hi[i] + g;
@@ -297,138 +397,50 @@ void Updater::broad_phase() {
       m_.threads, new_candidates_);
 }
 
-void Updater::near_pairs() {
-  const std::vector<std::pair<int, int>>& cand = rebuilt_ ? new_candidates_ : m_.candidates_;
-  const double s = m_.effective_margin();
-  const ContactState& committed = m_.committed_;
-  // The group pair of a candidate within contact reach, or -1.
-  const auto near = [this, s](const std::pair<int, int>& c) {
+// Whether the candidate (a, b) of group pair gp is within contact reach.
+// Swept boxes once there is a commit: a pair that met anywhere between its
+// committed and its current position is evaluated (crossing.hpp).
+bool Updater::near(int a, int b, int gp) const {
+  const pair::Params& p = m_.group_pairs_[gp].params;
+  const double reach = m_.table_.segment(a).radius + m_.table_.segment(b).radius +
+                       pair::contact_start_gap(p) + margin_;
+  return box_distance(search_boxes()[a], search_boxes()[b]) <= reach;
+}
+
+bool Updater::work_item(size_t k, Item& it, bool* is_near) const {
+  const std::vector<std::pair<int, int>>& cand = candidates();
+  *is_near = false;
+  const StoredPair* sp;
+  if (k < cand.size()) {
+    const std::pair<int, int>& c = cand[k];
     const int gp = m_.group_pair_index(c.first, c.second);
-    const pair::Params& p = m_.group_pairs_[gp].params;
-    const double g0 = pair::contact_start_gap(p);
-    const double reach = m_.table_.segment(c.first).radius + m_.table_.segment(c.second).radius +
-                         g0 + s;
-    // Swept boxes once there is a commit: a pair that met anywhere between
-    // its committed and its current position is evaluated (crossing.hpp).
-    return box_distance(search_boxes()[c.first], search_boxes()[c.second]) > reach ? -1 : gp;
-  };
-  // Counted first, so that the items are allocated once, at their size (a
-  // vector grown by doubling holds up to twice that), with room for the
-  // pairs handovers add, at most one per committed contact.
-  size_t n_items = 0, n_committed = 0;
-  for (const auto& c : cand) n_items += near(c) >= 0;
-  for (const StoredPair& sp : committed.pairs) n_committed += sp.status == B2B_CONTACT_ACTIVE;
-  items_.clear();
-  items_.reserve(n_items + 2 * n_committed);
-  for (const auto& c : cand) {
-    const int gp = near(c);
-    if (gp < 0) continue;
-    ++near_;
-    Item it;
+    *is_near = near(c.first, c.second, gp);
+    sp = m_.committed_.find(pair_key(c.first, c.second));
+    // The contacts of the last commit are evaluated whatever the boxes say:
+    // their pair tells where the point went.
+    if (!*is_near && !(sp && sp->status == B2B_CONTACT_ACTIVE)) return false;
     it.a = c.first;
     it.b = c.second;
     it.gp = gp;
-    items_.push_back(it);
+  } else {
+    sp = extras_[k - cand.size()];
+    it.gp = sp->group_pair;
   }
-  // The contacts of the last commit are evaluated whatever the boxes say:
-  // their pair tells where the point went. Both lists are in key order (the
-  // search returns its pairs sorted, a < b), so a merge keeps them so.
-  const auto by_key = [](const Item& x, const Item& y) { return x.key() < y.key(); };
-  const size_t n_near = items_.size();
-  for (const StoredPair& sp : committed.pairs) {
-    if (sp.status != B2B_CONTACT_ACTIVE) continue;
-    Item it;
-    it.a = sp.a;
-    it.b = sp.b;
-    it.gp = sp.group_pair;
-    items_.push_back(it);
-  }
-  std::inplace_merge(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(n_near),
-                     items_.end(), by_key);
-  items_.erase(std::unique(items_.begin(), items_.end(),
-                           [](const Item& x, const Item& y) { return x.key() == y.key(); }),
-               items_.end());
   // A pair with a committed history keeps its orientation and reads it.
-  for (Item& it : items_)
-    if (const StoredPair* sp = committed.find(it.key())) {
-      it.a = sp->a;
-      it.b = sp->b;
-      it.hist_old = committed.history(*sp);
-      it.hist_old_len = sp->length;
-    }
+  if (sp) {
+    it.a = sp->a;
+    it.b = sp->b;
+    it.hist_old = m_.committed_.history(*sp);
+    it.hist_old_len = sp->length;
+  }
+  return true;
 }
 
-Problem Updater::build_one(int s) {
-  Problem pb;
-  slot_[s] = static_cast<int>(built_.size());
-  built_.emplace_back();
-  built_X_.resize(12 * built_.size());
-  gather_patch(m_.table_.segment(s), cur_.data(), m_.used_index_, &built_X_[12 * slot_[s]]);
-  const curve::Failure f =
-      build_segment(m_.table_.segment(s), cur_.data(), m_.used_index_, built_.back(), true);
-  if (f.status) {
-    pb.status = f.status;
-    pb.what = Problem::What::Segment;
-    pb.beam = m_.table_.segment(s).beam;
-    pb.segment = m_.table_.segment(s).index;
-    pb.slot_a = f.slot_a;
-    pb.slot_b = f.slot_b;
-  }
-  return pb;
-}
-
-Problem Updater::build_segments() {
-  const int n = m_.table_.segment_count();
-  // The segments of the items, in increasing order: marked in slot_ (two
-  // per item, sorted, would cost more than the n slots), then numbered.
-  slot_.assign(n, -1);
-  for (const Item& it : items_) slot_[it.a] = slot_[it.b] = 0;
-  int nn = 0;
-  for (int s = 0; s < n; ++s) nn += slot_[s] == 0;
-  if (nn == 0) return Problem();
-  std::vector<int> need;
-  need.reserve(nn);
-  for (int s = 0; s < n; ++s)
-    if (slot_[s] == 0) need.push_back(s);
-  // Reserved before they are made (a segment is ~3 kB): a reserve after
-  // would copy them all. Handovers add a few.
-  built_.reserve(nn + 64);
-  built_.assign(nn, curve::Segment());
-  built_X_.reserve(12 * static_cast<size_t>(nn + 64));
-  built_X_.assign(12 * static_cast<size_t>(nn), 0.0);
-  for (int k = 0; k < nn; ++k) {
-    slot_[need[k]] = k;
-    gather_patch(m_.table_.segment(need[k]), cur_.data(), m_.used_index_, &built_X_[12 * k]);
-  }
-  std::vector<curve::Failure> fail(nn);
-  const SegmentInfo* info = &m_.table_.segment(0);
-  const double* cur = cur_.data();
-  const NodeIndex& used = m_.used_index_;
-  curve::Segment* built = built_.data();
-  std::atomic<bool> thrown{false};  // no exception may leave a parallel region
-#ifdef B2B_HAVE_OPENMP
-#pragma omp parallel for schedule(static) num_threads(nt()) if (nn >= kParallelSegments)
-#endif
-  for (int k = 0; k < nn; ++k) {
-    try {
-      fail[k] = build_segment(info[need[k]], cur, used, built[k], true);
-    } catch (...) {
-      thrown = true;
-    }
-  }
-  if (thrown) throw std::bad_alloc();
-  for (int k = 0; k < nn; ++k)
-    if (fail[k].status) {
-      Problem pb;
-      pb.status = fail[k].status;
-      pb.what = Problem::What::Segment;
-      pb.beam = info[need[k]].beam;
-      pb.segment = info[need[k]].index;
-      pb.slot_a = fail[k].slot_a;
-      pb.slot_b = fail[k].slot_b;
-      return pb;
-    }
-  return Problem();
+pair::SegmentRef Updater::ref(int s, const SegmentCache::Entry& e) const {
+  const SegmentInfo& info = m_.table_.segment(s);
+  static const double kNoTangents[6] = {0, 0, 0, 0, 0, 0};
+  return pair::SegmentRef{&e.built, info.kind, info.start_rule, info.end_rule, info.radius,
+                          e.X,      kNoTangents};
 }
 
 // Which nodes of segment s may hold an end contact (end_contact.hpp): its
@@ -453,25 +465,46 @@ SegmentEnds Updater::ends_of(int s) const {
   return e;
 }
 
-void Updater::evaluate(const Item& item, pair::PairResult& res, std::vector<double>& line_hist,
-                       double* K) const {
-  if (m_.group_pairs_[item.gp].line) return evaluate_line(item, res, line_hist, K);
+bool Updater::evaluate(const Item& item, SegmentCache& cache, pair::PairResult& res,
+                       std::vector<double>& line_hist, double* K, curve::Failure& fail,
+                       int* bad) const {
+  const double* cur = cur_.data();
+  const SegmentCache::Entry* ea =
+      cache.get(item.a, nullptr, m_.table_.segment(item.a), cur, m_.used_index_, fail);
+  curve::Failure fail_b;
+  const SegmentCache::Entry* eb =
+      cache.get(item.b, ea, m_.table_.segment(item.b), cur, m_.used_index_, fail_b);
+  if (!ea || !eb) {
+    // The lower of the pair's failing segments.
+    if (!ea && (eb || item.a < item.b)) {
+      *bad = item.a;
+    } else {
+      *bad = item.b;
+      fail = fail_b;
+    }
+    return false;
+  }
+  const pair::SegmentRef A = ref(item.a, *ea), B = ref(item.b, *eb);
+  if (m_.group_pairs_[item.gp].line) {
+    evaluate_line(item, A, B, res, line_hist, K);
+    return true;
+  }
   const double* h = item.hist_old ? item.hist_old : fresh_.data();
   const pair::Params& p = m_.group_pairs_[item.gp].params;
-  const pair::SegmentRef A = ref(item.a), B = ref(item.b);
   pair::evaluate_built(p, A, B, h, res, K);
   if (res.contact_status == B2B_CONTACT_OUTSIDE)
     resolve_end_contact(p, A, B, ends_of(item.a), ends_of(item.b), h, res, K);
+  return true;
 }
 
 // A line pair (GroupPair::line): its committed histories, points taken over
 // from the pairs of B's neighbouring segments, the line element, and its
 // summary in the point element's layout (line_pair.hpp).
-void Updater::evaluate_line(const Item& item, pair::PairResult& res,
+void Updater::evaluate_line(const Item& item, const pair::SegmentRef& A,
+                            const pair::SegmentRef& B, pair::PairResult& res,
                             std::vector<double>& line_hist, double* K) const {
   const GroupPair& gp = m_.group_pairs_[item.gp];
   const int hl = gp.hist_len;
-  const pair::SegmentRef A = ref(item.a), B = ref(item.b);
   const int n = line_pair_points(gp.params, A, B, item.hist_old ? item.hist_old_len : 0, hl);
   const size_t len = static_cast<size_t>(n + 1) * hl;
   std::vector<double> in(len, 0.0);
@@ -522,6 +555,26 @@ void Updater::settle_alone(Item& item, const pair::PairResult& res,
   }
 }
 
+Problem Updater::segment_problem(int s, const curve::Failure& f) const {
+  Problem pb;
+  pb.status = f.status;
+  pb.what = Problem::What::Segment;
+  pb.beam = m_.table_.segment(s).beam;
+  pb.segment = m_.table_.segment(s).index;
+  pb.slot_a = f.slot_a;
+  pb.slot_b = f.slot_b;
+  return pb;
+}
+
+Problem Updater::evaluate_serial(const Item& item, pair::PairResult& res,
+                                 std::vector<double>& line_hist, double* K) {
+  curve::Failure fail;
+  int bad = -1;
+  if (!evaluate(item, ws_.caches[0], res, line_hist, K, fail, &bad))
+    return segment_problem(bad, fail);
+  return Problem();
+}
+
 Problem Updater::overflow(const Item& item) const {
   Problem pb;
   pb.status = B2B_ERR_RANGE;
@@ -554,57 +607,138 @@ Problem Updater::totals_overflow() const {
   return Problem();
 }
 
+// One chunk of work items [c kChunk, (c + 1) kChunk): each evaluated on
+// the thread's cache, its status counted, and the pair kept if a later
+// stage reads it; its records and tangents copied at their exact size into
+// the chunk's blocks. recs, Ks, line_hist, res, K: the thread's buffers.
+void Updater::evaluate_chunk(int c, size_t n_work, SegmentCache& cache, ChunkOut& out,
+                             std::vector<double>& recs, std::vector<double>& Ks,
+                             std::vector<double>& line_hist, pair::PairResult& res, double* K) {
+  const size_t begin = static_cast<size_t>(c) * kChunk;
+  const size_t end = std::min(n_work, begin + kChunk);
+  out.kept.clear();
+  recs.clear();
+  Ks.clear();
+  int64_t rec_at[kChunk], K_at[kChunk];
+  for (size_t k = begin; k < end; ++k) {
+    Item it;
+    bool is_near;
+    if (!work_item(k, it, &is_near)) continue;
+    out.near += is_near;
+    ++out.evaluated;
+    curve::Failure fail;
+    int bad = -1;
+    if (!evaluate(it, cache, res, line_hist, want_tangent_ ? K : nullptr, fail, &bad)) {
+      if (out.bad_segment < 0 || bad < out.bad_segment) {
+        out.bad_segment = bad;
+        out.fail = fail;
+      }
+      continue;
+    }
+    const int64_t at = settle(it, res, line_hist, recs);
+    if (at < 0 && !it.overflow) {
+      ++out.counts[count_slot(it.status)];
+      continue;
+    }
+    const size_t j = out.kept.size();
+    rec_at[j] = at;
+    K_at[j] = -1;
+    if (want_tangent_ && it.status == B2B_CONTACT_ACTIVE) {
+      K_at[j] = static_cast<int64_t>(Ks.size());
+      Ks.insert(Ks.end(), K, K + pair::kNdof * pair::kNdof);
+    }
+    out.kept.push_back(it);
+    out.kept_candidates += k < candidates().size();
+  }
+  if (!recs.empty()) records_[c].assign(recs.begin(), recs.end());
+  if (!Ks.empty()) tangent_blocks_[c].assign(Ks.begin(), Ks.end());
+  for (size_t j = 0; j < out.kept.size(); ++j) {
+    if (rec_at[j] >= 0) out.kept[j].rec = records_[c].data() + rec_at[j];
+    if (K_at[j] >= 0) out.kept[j].tangent = tangent_blocks_[c].data() + K_at[j];
+  }
+}
+
 Problem Updater::evaluate_all() {
   fresh_.assign(pair::kHistoryLengthMax, 0.0);
-  const int n = static_cast<int>(items_.size());
-  const int n_chunks = (n + kChunk - 1) / kChunk;
+  // The committed contacts that the candidates do not hold (both lists are
+  // in key order: the search returns its pairs sorted, a < b).
+  const std::vector<std::pair<int, int>>& cand = candidates();
+  extras_.clear();
+  for (const StoredPair& sp : m_.committed_.pairs) {
+    if (sp.status != B2B_CONTACT_ACTIVE) continue;
+    const std::pair<int, int> c(std::min(sp.a, sp.b), std::max(sp.a, sp.b));
+    if (!std::binary_search(cand.begin(), cand.end(), c)) extras_.push_back(&sp);
+  }
+  const size_t n_work = cand.size() + extras_.size();
+  const int n_chunks = static_cast<int>((n_work + kChunk - 1) / kChunk);
+  const int threads = nt();
+  if (ws_.caches.size() < static_cast<size_t>(std::max(threads, 1)))
+    ws_.caches.resize(std::max(threads, 1));
+  // The cache's size goes with the candidates: chosen again when they are.
+  if (rebuilt_ || ws_.cache_sets == 0)
+    ws_.cache_sets = SegmentCache::choose_sets(cand, m_.table_.segment_count(), threads);
+  for (SegmentCache& cache : ws_.caches) cache.reset(ws_.cache_sets);
   // One block of records and one of tangents per chunk, each filled by the
   // thread that evaluates the chunk: the layout does not depend on the
   // threads.
   records_.assign(n_chunks, std::vector<double>());
   tangent_blocks_.assign(want_tangent_ ? n_chunks : 0, std::vector<double>());
-  Item* items = items_.data();
+  std::vector<ChunkOut> outs(n_chunks);
   std::atomic<bool> thrown{false};  // no exception may leave a parallel region
 #ifdef B2B_HAVE_OPENMP
-#pragma omp parallel num_threads(nt()) if (n >= kParallelPairs)
+#pragma omp parallel num_threads(threads) if (n_work >= static_cast<size_t>(kParallelPairs))
 #endif
   {
-    // A thread's buffers, reused from chunk to chunk; a chunk's records and
-    // tangents are copied out of them at their exact size.
+#ifdef B2B_HAVE_OPENMP
+    SegmentCache& cache = ws_.caches[omp_get_thread_num()];
+#else
+    SegmentCache& cache = ws_.caches[0];
+#endif
+    // A thread's buffers, reused from chunk to chunk.
     std::vector<double> recs, Ks, line_hist;
     pair::PairResult res;
     double K[pair::kNdof * pair::kNdof];
-    int64_t rec_at[kChunk], K_at[kChunk];
 #ifdef B2B_HAVE_OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif
     for (int c = 0; c < n_chunks; ++c) {
       if (thrown.load(std::memory_order_relaxed)) continue;
       try {
-        const int begin = c * kChunk, end = std::min(n, begin + kChunk);
-        recs.clear();
-        Ks.clear();
-        for (int k = begin; k < end; ++k) {
-          evaluate(items[k], res, line_hist, want_tangent_ ? K : nullptr);
-          rec_at[k - begin] = settle(items[k], res, line_hist, recs);
-          K_at[k - begin] = -1;
-          if (want_tangent_ && items[k].status == B2B_CONTACT_ACTIVE) {
-            K_at[k - begin] = static_cast<int64_t>(Ks.size());
-            Ks.insert(Ks.end(), K, K + pair::kNdof * pair::kNdof);
-          }
-        }
-        if (!recs.empty()) records_[c].assign(recs.begin(), recs.end());
-        if (!Ks.empty()) tangent_blocks_[c].assign(Ks.begin(), Ks.end());
-        for (int k = begin; k < end; ++k) {
-          if (rec_at[k - begin] >= 0) items[k].rec = records_[c].data() + rec_at[k - begin];
-          if (K_at[k - begin] >= 0) items[k].tangent = tangent_blocks_[c].data() + K_at[k - begin];
-        }
+        evaluate_chunk(c, n_work, cache, outs[c], recs, Ks, line_hist, res, K);
       } catch (...) {
         thrown = true;
       }
     }
   }
   if (thrown) throw std::bad_alloc();
+  // The lowest segment that could not be built, as if all were built first.
+  int bad = -1;
+  const ChunkOut* bad_out = nullptr;
+  size_t n_kept = 0;
+  for (int c = 0; c < n_chunks; ++c) {
+    const ChunkOut& o = outs[c];
+    if (o.bad_segment >= 0 && (bad < 0 || o.bad_segment < bad)) {
+      bad = o.bad_segment;
+      bad_out = &o;
+    }
+    for (int i = 0; i < B2B_MODEL_COUNTS_LEN; ++i) unkept_[i] += o.counts[i];
+    evaluated_ += o.evaluated;
+    near_ += o.near;
+    n_kept += o.kept.size();
+  }
+  if (bad_out) return segment_problem(bad, bad_out->fail);
+  // The kept pairs in key order: the candidates' in their order, then the
+  // extras' (rare) merged in.
+  items_.clear();
+  items_.reserve(n_kept + 2 * extras_.size());
+  size_t from_candidates = 0;
+  for (int c = 0; c < n_chunks; ++c) {
+    items_.insert(items_.end(), outs[c].kept.begin(), outs[c].kept.end());
+    from_candidates += outs[c].kept_candidates;
+  }
+  const auto by_key = [](const Item& x, const Item& y) { return x.key() < y.key(); };
+  std::inplace_merge(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(from_candidates),
+                     items_.end(), by_key);
   for (const Item& it : items_)
     if (it.overflow) return overflow(it);
   return Problem();
@@ -615,7 +749,8 @@ Problem Updater::evaluate_all() {
 // normal of its committed closest points; on the other side now, it is
 // evaluated with that normal as its history, which gives it its signed gap
 // (crossing.hpp). In item order after the parallel evaluation, so the
-// tangents' layout does not depend on the threads.
+// tangents' layout does not depend on the threads. (Every such pair is
+// kept: active and open pairs have records.)
 Problem Updater::crossed_pairs() {
   if (!has_committed_) return Problem();
   for (Item& it : items_) {
@@ -626,7 +761,8 @@ Problem Updater::crossed_pairs() {
       continue;
     }
     const double* d = it.rec + kRecDiff;
-    if (!may_have_crossed(motion_, it.a, it.b, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
+    if (!may_have_crossed(ws_.motion, it.a, it.b,
+                          std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
       continue;
     const GroupPair& gp = m_.group_pairs_[it.gp];
     // Only pairs that moved this far need one (rare within Newton's
@@ -652,7 +788,8 @@ Problem Updater::evaluate_with(Item& it, std::vector<double> hist) {
   pair::PairResult res;
   std::vector<double> line_hist;
   double K[pair::kNdof * pair::kNdof];
-  evaluate(it, res, line_hist, want_tangent_ ? K : nullptr);
+  if (Problem pb = evaluate_serial(it, res, line_hist, want_tangent_ ? K : nullptr); pb.status)
+    return pb;
   settle_alone(it, res, line_hist, want_tangent_ ? K : nullptr);
   if (it.overflow) return overflow(it);
   return Problem();
@@ -667,7 +804,7 @@ Problem Updater::crossed_line_pair(Item& it) {
   const GroupPair& gp = m_.group_pairs_[it.gp];
   const double rho = it.rec[kRecGap] + m_.table_.segment(it.a).radius +
                      m_.table_.segment(it.b).radius;
-  if (!may_have_crossed(motion_, it.a, it.b, rho)) return Problem();
+  if (!may_have_crossed(ws_.motion, it.a, it.b, rho)) return Problem();
   const int hl = gp.hist_len;
   const int n = it.hist_len / hl - 1;
   std::vector<double> h(it.hist_len);
@@ -676,6 +813,34 @@ Problem Updater::crossed_line_pair(Item& it) {
                                 gp.params.max_iterations, n, hl, h.data()))
     return Problem();
   return evaluate_with(it, std::move(h));
+}
+
+// The evaluation kept only the pairs a later stage reads; a handover onto
+// another pair must know whether that pair was evaluated, and with what
+// status, to count it once. The evaluation is a pure function of the
+// coordinates and the committed state, so evaluating it again here gives
+// exactly that status (handovers are rare: a contact crossing a joint).
+Problem Updater::unkept_status(int a, int b, int* status) {
+  *status = -1;
+  const std::vector<std::pair<int, int>>& cand = candidates();
+  const std::pair<int, int> c(std::min(a, b), std::max(a, b));
+  const auto at = std::lower_bound(cand.begin(), cand.end(), c);
+  Item it;
+  bool is_near = false;
+  if (at != cand.end() && *at == c) {
+    if (!work_item(static_cast<size_t>(at - cand.begin()), it, &is_near)) return Problem();
+  } else {
+    const auto ex = std::find_if(extras_.begin(), extras_.end(), [&c](const StoredPair* sp) {
+      return pair_key(sp->a, sp->b) == pair_key(c.first, c.second);
+    });
+    if (ex == extras_.end()) return Problem();
+    work_item(candidates().size() + static_cast<size_t>(ex - extras_.begin()), it, &is_near);
+  }
+  pair::PairResult res;
+  std::vector<double> line_hist;
+  if (Problem pb = evaluate_serial(it, res, line_hist, nullptr); pb.status) return pb;
+  *status = res.contact_status;
+  return Problem();
 }
 
 Problem Updater::handovers() {
@@ -726,9 +891,6 @@ Problem Updater::handovers() {
       }
       if (std::find(claimed.begin(), claimed.end(), key) != claimed.end()) break;
       if (!m_.may_pair(a, b)) break;
-      for (int s : {a, b})
-        if (slot_[s] < 0)
-          if (Problem pb = build_one(s); pb.status) return pb;
       Item trial;
       trial.a = a;
       trial.b = b;
@@ -736,17 +898,28 @@ Problem Updater::handovers() {
       trial.hist_old = hist;
       pair::PairResult res;
       double K[pair::kNdof * pair::kNdof];
-      evaluate(trial, res, line_hist, want_tangent_ ? K : nullptr);
+      if (Problem pb = evaluate_serial(trial, res, line_hist, want_tangent_ ? K : nullptr);
+          pb.status)
+        return pb;
       if (res.overflow) return overflow(trial);
       const int st = res.contact_status;
       if (st == B2B_CONTACT_ACTIVE || st == B2B_CONTACT_OPEN) {
         trial.hist_old = nullptr;  // the handed-over history lives only here
         settle_alone(trial, res, line_hist, want_tangent_ ? K : nullptr);
         claimed.push_back(key);
-        if (Item* existing = find_item(key); existing && existing - items_.data() < static_cast<std::ptrdiff_t>(n_sorted))
+        if (Item* existing = find_item(key);
+            existing && existing - items_.data() < static_cast<std::ptrdiff_t>(n_sorted)) {
           *existing = trial;
-        else
+        } else {
+          // Evaluated and not kept (counted by its status there), or new.
+          int old = -1;
+          if (Problem pb = unkept_status(a, b, &old); pb.status) return pb;
+          if (old >= 0)
+            --unkept_[count_slot(old)];
+          else
+            ++evaluated_;
           added.push_back(trial);
+        }
         found = true;
         break;
       }
@@ -772,7 +945,9 @@ void Updater::finish() {
   Model& m = m_;
   ContactState trial;
   std::vector<Contact> contacts;
-  int counts[16] = {0};
+  // The pairs evaluated and not kept are counted already; the kept ones here.
+  int counts[B2B_MODEL_COUNTS_LEN];
+  std::memcpy(counts, unkept_, sizeof counts);
   double totals[8] = {0};
   double min_gap = HUGE_VAL;
   // Sized first: the trial state and the contacts are allocated once, at
@@ -789,20 +964,11 @@ void Updater::finish() {
   contacts.reserve(n_active);
   for (const Item& it : items_) {
     const int st = it.status;
-    switch (st) {
-      case B2B_CONTACT_ACTIVE:
-        ++counts[B2B_COUNT_ACTIVE];
-        // The axes passed through each other (signed gap below -(r_A + r_B)).
-        if (it.rec[kRecGap] <
-            -(m.table_.segment(it.a).radius + m.table_.segment(it.b).radius))
-          ++counts[B2B_COUNT_CROSSED];
-        break;
-      case B2B_CONTACT_OPEN: ++counts[B2B_COUNT_OPEN]; break;
-      case B2B_CONTACT_OUTSIDE: ++counts[B2B_COUNT_OUTSIDE]; break;
-      case B2B_CONTACT_PARALLEL: ++counts[B2B_COUNT_PARALLEL]; break;
-      case B2B_CONTACT_NOT_CONVERGED: ++counts[B2B_COUNT_NOT_CONVERGED]; break;
-      default: ++counts[B2B_COUNT_NO_NORMAL]; break;
-    }
+    ++counts[count_slot(st)];
+    // The axes passed through each other (signed gap below -(r_A + r_B)).
+    if (st == B2B_CONTACT_ACTIVE &&
+        it.rec[kRecGap] < -(m.table_.segment(it.a).radius + m.table_.segment(it.b).radius))
+      ++counts[B2B_COUNT_CROSSED];
     if (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN) continue;
     min_gap = std::min(min_gap, it.rec[kRecGap]);
     const GroupPair& gp = m.group_pairs_[it.gp];
@@ -853,7 +1019,7 @@ void Updater::finish() {
     ++m.builds_;
   }
   counts[B2B_COUNT_CANDIDATES] = static_cast<int>(m.candidates_.size());
-  counts[B2B_COUNT_EVALUATED] = static_cast<int>(items_.size());
+  counts[B2B_COUNT_EVALUATED] = evaluated_;
   counts[B2B_COUNT_FAR] = counts[B2B_COUNT_CANDIDATES] - near_;
   counts[B2B_COUNT_SEARCH_BUILDS] = m.builds_;
   counts[B2B_COUNT_HANDOVERS] = hops_;
@@ -863,7 +1029,10 @@ void Updater::finish() {
   m.trial_ = std::move(trial);
   m.contacts_ = std::move(contacts);
   m.tangents_ = std::move(tangents);
-  m.current_coords_ = std::move(cur_);
+  // The model keeps these coordinates; the buffer of the last update's
+  // goes to the next update.
+  m.current_coords_.swap(cur_);
+  ws_.coords.swap(cur_);
   m.want_tangent_ = want_tangent_;
   m.updated_ = true;
   m.has_results_ = true;
