@@ -25,7 +25,7 @@
 
 #define PI 3.14159265358979323846
 #define MAXR 3
-#define MAXSEG 512
+#define MAXSEG 128
 #define MAXC 2048
 
 static void ok(int st, const char *msg) { ck_assert_msg(st == B2B_OK, "status %d: %s", st, msg); }
@@ -51,6 +51,8 @@ typedef struct {
   int pieces[MAXR];   /* local beams */
   int cuts[MAXR];     /* cuts (padding segments) */
   int ghosts[MAXR];   /* ghost segments (padding included) */
+  int piece_gbeam[MAXR][4 * TST_MAX_BEAMS];  /* per local beam: its global beam, */
+  int piece_first[MAXR][4 * TST_MAX_BEAMS];  /* and its first global segment */
 } dist;
 
 /* Host nodes of segment s of beam b (its patch; -1 none). */
@@ -145,6 +147,9 @@ static void dist_build(dist *d, const b2b_params *p, int all_pairs, double margi
         ok(b2b_model_add_beam(m, nodes, count, sc->closed[b], sc->radius[b], sc->kind[b],
                               sc->group[b], &beam, msg, sizeof msg), msg);
         ck_assert_int_eq(beam, local);
+        ck_assert_int_lt(local, 4 * TST_MAX_BEAMS);
+        d->piece_gbeam[r][local] = b;
+        d->piece_first[r][local] = s0;
         ok(b2b_model_set_beam_global(m, beam, b, s0, start_cut, end_cut, msg, sizeof msg), msg);
         for (int k = s0; k < s1; ++k)
           if (k < s || k >= e || held[b][k] == 2) {
@@ -422,9 +427,8 @@ static void arc_partition(dist *d, int nr) {
 
 static void slide_run(int kind, int nr) {
   char msg[B2B_ERRMSG_LEN] = "";
-  arc_scene a, a2;
+  arc_scene a;
   arc_setup(&a, kind);
-  arc_setup(&a2, kind);
   b2b_params *p = tst_params_friction(B2B_LAW_LINEAR, 1e3, 0.0, 0.3, 2e3);
   arc_place(&a, 0.25);
   b2b_model *single = tst_model(&a.sc, p, 0);
@@ -501,7 +505,6 @@ static void slide_run(int kind, int nr) {
   dist_free(&nomig);
   b2b_model_destroy(&single);
   b2b_params_destroy(&p);
-  (void)a2;
 }
 
 START_TEST(slide_across_ranks) {
@@ -512,6 +515,495 @@ START_TEST(slide_across_ranks) {
 }
 END_TEST
 
+
+/* ---------------------------------------------------------------------------
+ * 3. Received contacts: a second unpack, the end of a round, revert, restart.
+ * ------------------------------------------------------------------------- */
+#define REC_CAP (1 << 16)
+
+static size_t record(const b2b_model *m, unsigned char *buf) {
+  return tst_model_record(m, 1, buf, REC_CAP);
+}
+
+/* Runs the sliding scene on two ranks, committing, up to the first update
+ * whose rank 0 has a migrating contact; returns its theta (the models are
+ * updated there, before any exchange). */
+static double run_to_migration(dist *d, arc_scene *a, b2b_params *p) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  dist_init(d, &a->sc, 2);
+  arc_partition(d, 2);
+  dist_build(d, p, 0, 20.0);
+  for (double theta = 0.25; theta <= 2.85; theta += 0.05) {
+    arc_place(a, theta);
+    for (int r = 0; r < 2; ++r)
+      ok(b2b_model_update(d->m[r], a->x, 3, a->sc.n_nodes, 1, msg, sizeof msg), msg);
+    int n;
+    ok(b2b_model_migration_count(d->m[0], &n, msg, sizeof msg), msg);
+    if (n == 1) return theta;
+    ck_assert_int_eq(n, 0);
+    dist_commit(d);
+  }
+  ck_abort_msg("no contact migrated");
+  return 0.0;
+}
+
+/* Packs rank 0's migrating contact 0 (malloc'ed). */
+static unsigned char *pack0(const dist *d, int64_t *size) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  int64_t target[4];
+  ok(b2b_model_migration_info(d->m[0], 0, target, size, msg, sizeof msg), msg);
+  ck_assert_int_eq(owner_of(d, target), 1);
+  unsigned char *buf = malloc((size_t)*size);
+  ok(b2b_model_migration_pack(d->m[0], 0, buf, *size, msg, sizeof msg), msg);
+  return buf;
+}
+
+START_TEST(received_contacts) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  static unsigned char r0[REC_CAP], r1[REC_CAP], r2[REC_CAP];
+  arc_scene a;
+  arc_setup(&a, B2B_CURVE_HERMITE_NODAL);
+  b2b_params *p = tst_params_friction(B2B_LAW_LINEAR, 1e3, 0.0, 0.3, 2e3);
+  dist d;
+  run_to_migration(&d, &a, p);
+  b2b_model *m1 = d.m[1];
+  const size_t n0 = record(m1, r0);  /* rank 1 without the contact */
+  int64_t size;
+  unsigned char *buf = pack0(&d, &size);
+  int ch = -1;
+  ok(b2b_model_migration_unpack(m1, buf, size, &ch, msg, sizeof msg), msg);
+  ck_assert_int_eq(ch, 1);
+  ok(b2b_model_update(m1, a.x, 3, a.sc.n_nodes, 1, msg, sizeof msg), msg);
+  const size_t n1 = record(m1, r1);
+  ck_assert_msg(n1 != n0 || memcmp(r0, r1, n0) != 0, "the received contact changes rank 1");
+  /* the same contact again: nothing changes */
+  ok(b2b_model_migration_unpack(m1, buf, size, &ch, msg, sizeof msg), msg);
+  ck_assert_int_eq(ch, 0);
+  ok(b2b_model_migration_unpack(m1, NULL, 0, &ch, msg, sizeof msg), msg);
+  ck_assert_int_eq(ch, 0);  /* it was unpacked since the last update */
+  ok(b2b_model_update(m1, a.x, 3, a.sc.n_nodes, 1, msg, sizeof msg), msg);
+  ck_assert(record(m1, r2) == n1 && memcmp(r1, r2, n1) == 0);
+  /* a round in which nobody sends it again drops it */
+  ok(b2b_model_migration_unpack(m1, NULL, 0, &ch, msg, sizeof msg), msg);
+  ck_assert_int_eq(ch, 1);
+  ok(b2b_model_migration_unpack(m1, NULL, 0, &ch, msg, sizeof msg), msg);
+  ck_assert_int_eq(ch, 0);
+  ok(b2b_model_update(m1, a.x, 3, a.sc.n_nodes, 1, msg, sizeof msg), msg);
+  ck_assert(record(m1, r2) == n0 && memcmp(r0, r2, n0) == 0);
+  /* revert drops it */
+  ok(b2b_model_migration_unpack(m1, buf, size, &ch, msg, sizeof msg), msg);
+  ck_assert_int_eq(ch, 1);
+  ok(b2b_model_revert(m1, msg, sizeof msg), msg);
+  ok(b2b_model_update(m1, a.x, 3, a.sc.n_nodes, 1, msg, sizeof msg), msg);
+  ck_assert(record(m1, r2) == n0 && memcmp(r0, r2, n0) == 0);
+  /* a commit keeps its result and ends it: rank 0 no longer has it either */
+  ok(b2b_model_migration_unpack(m1, buf, size, &ch, msg, sizeof msg), msg);
+  ok(b2b_model_update(m1, a.x, 3, a.sc.n_nodes, 1, msg, sizeof msg), msg);
+  ck_assert(record(m1, r2) == n1 && memcmp(r1, r2, n1) == 0);
+  dist_commit(&d);
+  int n;
+  ok(b2b_model_migration_count(d.m[0], &n, msg, sizeof msg), msg);
+  ck_assert_int_eq(n, 0);
+  ok(b2b_model_contact_count(d.m[1], &n, msg, sizeof msg), msg);
+  ck_assert_int_eq(n, 1);
+  ok(b2b_model_contact_count(d.m[0], &n, msg, sizeof msg), msg);
+  ck_assert_int_eq(n, 0);
+  free(buf);
+  dist_free(&d);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
+/* A rank model saved after a migration restores into a model built the same
+ * way and continues bit for bit; a buffer of another rank is refused. */
+START_TEST(rank_restart) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  static unsigned char ra[REC_CAP], rb[REC_CAP];
+  arc_scene a;
+  arc_setup(&a, B2B_CURVE_HERMITE_NODAL_WEIGHTED);
+  b2b_params *p = tst_params_friction(B2B_LAW_LINEAR, 1e3, 0.0, 0.3, 2e3);
+  dist d, e;
+  double theta = run_to_migration(&d, &a, p);
+  while (exchange(&d, NULL))
+    for (int r = 0; r < 2; ++r)
+      ok(b2b_model_update(d.m[r], a.x, 3, a.sc.n_nodes, 1, msg, sizeof msg), msg);
+  dist_commit(&d);
+  dist_init(&e, &a.sc, 2);
+  arc_partition(&e, 2);
+  dist_build(&e, p, 0, 20.0);
+  unsigned char *saved[2];
+  int64_t size[2];
+  for (int r = 0; r < 2; ++r) {
+    ok(b2b_model_save_size(d.m[r], &size[r], msg, sizeof msg), msg);
+    saved[r] = malloc((size_t)size[r]);
+    ok(b2b_model_save(d.m[r], saved[r], size[r], msg, sizeof msg), msg);
+  }
+  /* rank 0's buffer into rank 1's model: another set-up */
+  int st = b2b_model_restore(e.m[1], saved[0], size[0], msg, sizeof msg);
+  ck_assert_int_eq(st, B2B_ERR_RANGE);
+  ck_assert_msg(strstr(msg, "another model") != NULL, "%s", msg);
+  for (int r = 0; r < 2; ++r) ok(b2b_model_restore(e.m[r], saved[r], size[r], msg, sizeof msg), msg);
+  int sent = 0;
+  for (int step = 0; step < 12; ++step) {
+    theta += 0.05;
+    arc_place(&a, theta);
+    dist_update(&d, a.x, a.sc.n_nodes, 1, &sent);
+    dist_update(&e, a.x, a.sc.n_nodes, 1, NULL);
+    for (int r = 0; r < 2; ++r) {
+      const size_t na = record(d.m[r], ra), nb = record(e.m[r], rb);
+      ck_assert_msg(na == nb && memcmp(ra, rb, na) == 0, "step %d, rank %d: the restored model "
+                    "differs", step, r);
+    }
+    dist_commit(&d);
+    dist_commit(&e);
+  }
+  for (int r = 0; r < 2; ++r) free(saved[r]);
+  dist_free(&d);
+  dist_free(&e);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
+/* ---------------------------------------------------------------------------
+ * 4. Hostile input.
+ * ------------------------------------------------------------------------- */
+static void expect(int st, int want, const char *msg, const char *word) {
+  ck_assert_msg(st == want, "status %d (want %d): %s", st, want, msg);
+  ck_assert_msg(strstr(msg, word) != NULL, "message without \"%s\": %s", word, msg);
+}
+
+/* A model of three beams (nodes 0-5, 6-11, 12-16 closed) before finalize. */
+static b2b_model *three_beams(const b2b_params *p) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_model *m = NULL;
+  ok(b2b_model_create(&m, msg, sizeof msg), msg);
+  int nodes[6], beam;
+  for (int b = 0; b < 3; ++b) {
+    for (int k = 0; k < 6; ++k) nodes[k] = 6 * b + k;
+    ok(b2b_model_add_beam(m, nodes, b == 2 ? 5 : 6, b == 2, 0.1, B2B_CURVE_HERMITE_NODAL, 0,
+                          &beam, msg, sizeof msg), msg);
+  }
+  ok(b2b_model_set_group_pair(m, 0, 0, p, msg, sizeof msg), msg);
+  return m;
+}
+
+START_TEST(hostile_setup) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  b2b_model *m = three_beams(p);
+  expect(b2b_model_set_beam_global(NULL, 0, 0, 0, 0, 0, msg, sizeof msg), B2B_ERR_NULL, msg, "model");
+  expect(b2b_model_set_beam_global(m, 3, 0, 0, 0, 0, msg, sizeof msg), B2B_ERR_RANGE, msg, "beam 3");
+  expect(b2b_model_set_beam_global(m, -1, 0, 0, 0, 0, msg, sizeof msg), B2B_ERR_RANGE, msg, "beam -1");
+  expect(b2b_model_set_beam_global(m, 0, -1, 0, 0, 0, msg, sizeof msg), B2B_ERR_RANGE, msg, "global_beam");
+  expect(b2b_model_set_beam_global(m, 0, 0, -2, 0, 0, msg, sizeof msg), B2B_ERR_RANGE, msg, "first_segment");
+  expect(b2b_model_set_beam_global(m, 0, 0, 4, 2, 0, msg, sizeof msg), B2B_ERR_RANGE, msg, "start_cut");
+  expect(b2b_model_set_beam_global(m, 0, 0, 4, 0, -1, msg, sizeof msg), B2B_ERR_RANGE, msg, "end_cut");
+  expect(b2b_model_set_beam_global(m, 0, 0, 0, 1, 0, msg, sizeof msg), B2B_ERR_RANGE, msg, "nothing lies before");
+  expect(b2b_model_set_beam_global(m, 2, 2, 0, 0, 1, msg, sizeof msg), B2B_ERR_RANGE, msg, "closed beam cannot be cut");
+  expect(b2b_model_set_beam_global(m, 2, 2, 3, 0, 0, msg, sizeof msg), B2B_ERR_RANGE, msg, "whole");
+  expect(b2b_model_set_beam_global(m, 0, 0, 2147483647 - 3, 0, 0, msg, sizeof msg), B2B_ERR_RANGE, msg, "INT_MAX");
+  expect(b2b_model_set_ghost_segments(NULL, 0, 0, 1, msg, sizeof msg), B2B_ERR_NULL, msg, "model");
+  expect(b2b_model_set_ghost_segments(m, 5, 0, 1, msg, sizeof msg), B2B_ERR_RANGE, msg, "beam 5");
+  expect(b2b_model_set_ghost_segments(m, 0, 0, -1, msg, sizeof msg), B2B_ERR_RANGE, msg, "count");
+  expect(b2b_model_set_ghost_segments(m, 0, 5, 1, msg, sizeof msg), B2B_ERR_RANGE, msg, "beyond");
+  expect(b2b_model_set_ghost_segments(m, 0, -1, 1, msg, sizeof msg), B2B_ERR_RANGE, msg, "beyond");
+  expect(b2b_model_set_ghost_segments(m, 0, 3, 3, msg, sizeof msg), B2B_ERR_RANGE, msg, "beyond");
+  /* finalize: ghosts without ids */
+  ok(b2b_model_set_ghost_segments(m, 0, 0, 2, msg, sizeof msg), msg);
+  expect(b2b_model_finalize(m, 18, msg, sizeof msg), B2B_ERR_STATE, msg, "no beam has a global id");
+  /* some beams without ids */
+  ok(b2b_model_set_beam_global(m, 0, 0, 0, 0, 0, msg, sizeof msg), msg);
+  expect(b2b_model_finalize(m, 18, msg, sizeof msg), B2B_ERR_STATE, msg, "beam 1 has no global id");
+  /* out of global order */
+  ok(b2b_model_set_beam_global(m, 0, 5, 0, 0, 0, msg, sizeof msg), msg);
+  ok(b2b_model_set_beam_global(m, 1, 4, 0, 0, 0, msg, sizeof msg), msg);
+  ok(b2b_model_set_beam_global(m, 2, 6, 0, 0, 0, msg, sizeof msg), msg);
+  expect(b2b_model_finalize(m, 18, msg, sizeof msg), B2B_ERR_RANGE, msg, "global order");
+  /* overlapping pieces of one global beam (5 segments from 0, then from 3) */
+  ok(b2b_model_set_beam_global(m, 1, 5, 3, 1, 0, msg, sizeof msg), msg);
+  expect(b2b_model_finalize(m, 18, msg, sizeof msg), B2B_ERR_RANGE, msg, "overlaps");
+  /* the same piece order reversed */
+  ok(b2b_model_set_beam_global(m, 0, 5, 6, 1, 0, msg, sizeof msg), msg);
+  ok(b2b_model_set_beam_global(m, 1, 5, 0, 0, 1, msg, sizeof msg), msg);
+  expect(b2b_model_finalize(m, 18, msg, sizeof msg), B2B_ERR_RANGE, msg, "global order");
+  /* a cut whose padding is own */
+  ok(b2b_model_set_beam_global(m, 0, 5, 0, 0, 1, msg, sizeof msg), msg);
+  ok(b2b_model_set_beam_global(m, 1, 5, 6, 1, 0, msg, sizeof msg), msg);
+  expect(b2b_model_finalize(m, 18, msg, sizeof msg), B2B_ERR_RANGE, msg, "padding");
+  ck_assert_int_eq(b2b_model_update(m, NULL, 3, 18, 0, msg, sizeof msg), B2B_ERR_STATE);
+  /* made right: the pads are ghosts */
+  ok(b2b_model_set_ghost_segments(m, 0, 4, 1, msg, sizeof msg), msg);
+  ok(b2b_model_set_ghost_segments(m, 1, 0, 1, msg, sizeof msg), msg);
+  ok(b2b_model_finalize(m, 18, msg, sizeof msg), msg);
+  expect(b2b_model_set_beam_global(m, 0, 5, 0, 0, 1, msg, sizeof msg), B2B_ERR_STATE, msg, "finalized");
+  expect(b2b_model_set_ghost_segments(m, 0, 0, 1, msg, sizeof msg), B2B_ERR_STATE, msg, "finalized");
+  /* before an update */
+  int n = -7;
+  int64_t g[4] = {-7, -7, -7, -7}, size = -7;
+  expect(b2b_model_get_contact_global(m, 0, g, msg, sizeof msg), B2B_ERR_STATE, msg, "update");
+  expect(b2b_model_migration_count(m, &n, msg, sizeof msg), B2B_ERR_STATE, msg, "update");
+  expect(b2b_model_migration_info(m, 0, g, &size, msg, sizeof msg), B2B_ERR_STATE, msg, "update");
+  ck_assert(n == -7 && g[0] == -7 && g[3] == -7 && size == -7);
+  b2b_model_destroy(&m);
+  /* pieces of one global beam that differ */
+  m = three_beams(p);
+  ok(b2b_model_set_beam_global(m, 0, 0, 0, 0, 0, msg, sizeof msg), msg);
+  ok(b2b_model_set_beam_global(m, 1, 0, 5, 0, 0, msg, sizeof msg), msg);
+  ok(b2b_model_set_beam_global(m, 2, 1, 0, 0, 0, msg, sizeof msg), msg);
+  ok(b2b_model_set_self_contact(m, 1, 1, -1.0, msg, sizeof msg), msg);
+  expect(b2b_model_finalize(m, 18, msg, sizeof msg), B2B_ERR_RANGE, msg, "differ");
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
+static uint64_t fnv1a(const unsigned char *q, size_t n) {
+  uint64_t h = 1469598103934665603ULL;
+  for (size_t i = 0; i < n; ++i) {
+    h ^= q[i];
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+/* A crafted copy of buf: 8 bytes at `at` replaced by v, the checksum made
+ * right again. */
+static void craft(unsigned char *dst, const unsigned char *buf, int64_t size, size_t at,
+                  const void *v) {
+  memcpy(dst, buf, (size_t)size);
+  memcpy(dst + at, v, 8);
+  const uint64_t sum = fnv1a(dst, (size_t)size - 8);
+  memcpy(dst + size - 8, &sum, 8);
+}
+
+START_TEST(hostile_buffers) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  static unsigned char r0[REC_CAP], r1[REC_CAP];
+  arc_scene a;
+  arc_setup(&a, B2B_CURVE_HERMITE_NODAL);
+  b2b_params *p = tst_params_friction(B2B_LAW_LINEAR, 1e3, 0.0, 0.3, 2e3);
+  dist d;
+  run_to_migration(&d, &a, p);
+  b2b_model *m1 = d.m[1];
+  int64_t size;
+  unsigned char *buf = pack0(&d, &size);
+  unsigned char *bad = malloc((size_t)size + 64);
+  const size_t n0 = record(m1, r0);
+  int ch = 7;
+  /* calls */
+  expect(b2b_model_migration_unpack(m1, buf, size, NULL, msg, sizeof msg), B2B_ERR_NULL, msg, "changed");
+  expect(b2b_model_migration_unpack(NULL, buf, size, &ch, msg, sizeof msg), B2B_ERR_NULL, msg, "model");
+  expect(b2b_model_migration_unpack(m1, NULL, 5, &ch, msg, sizeof msg), B2B_ERR_NULL, msg, "buffer");
+  expect(b2b_model_migration_unpack(m1, buf, -1, &ch, msg, sizeof msg), B2B_ERR_SIZE, msg, "size");
+  expect(b2b_model_migration_pack(d.m[0], 0, bad, size - 1, msg, sizeof msg), B2B_ERR_SIZE, msg, "needs");
+  expect(b2b_model_migration_pack(d.m[0], 0, NULL, size, msg, sizeof msg), B2B_ERR_NULL, msg, "buffer");
+  expect(b2b_model_migration_pack(d.m[0], 1, bad, size, msg, sizeof msg), B2B_ERR_RANGE, msg, "does not exist");
+  expect(b2b_model_migration_info(d.m[0], -1, NULL, NULL, msg, sizeof msg), B2B_ERR_RANGE, msg, "does not exist");
+  int64_t g[4] = {-7, -7, -7, -7};
+  expect(b2b_model_get_contact_global(m1, 5, g, msg, sizeof msg), B2B_ERR_RANGE, msg, "does not exist");
+  expect(b2b_model_get_contact_global(m1, 0, NULL, msg, sizeof msg), B2B_ERR_NULL, msg, "pair");
+  ck_assert(g[0] == -7 && g[3] == -7);
+  /* the target is rank 1's: rank 0 does not evaluate it */
+  expect(b2b_model_migration_unpack(d.m[0], buf, size, &ch, msg, sizeof msg), B2B_ERR_RANGE, msg,
+         "not one this model evaluates");
+  /* every byte flipped in turn, every truncation, trailing bytes */
+  for (int64_t k = 0; k < size; ++k) {
+    memcpy(bad, buf, (size_t)size);
+    bad[k] ^= 0xFF;
+    const int st = b2b_model_migration_unpack(m1, bad, size, &ch, msg, sizeof msg);
+    ck_assert_msg(st == B2B_ERR_RANGE && ch == 7, "byte %lld flipped: status %d, changed %d",
+                  (long long)k, st, ch);
+  }
+  for (int64_t k = 0; k < size; ++k) {
+    const int st = b2b_model_migration_unpack(m1, buf, k, &ch, msg, sizeof msg);
+    ck_assert_msg(st == B2B_ERR_RANGE && ch == 7, "truncated to %lld: status %d", (long long)k, st);
+  }
+  memcpy(bad, buf, (size_t)size);
+  memset(bad + size, 0, 64);
+  expect(b2b_model_migration_unpack(m1, bad, size + 8, &ch, msg, sizeof msg), B2B_ERR_RANGE, msg, "size");
+  /* crafted fields with a right checksum */
+  struct { size_t at; int64_t v; const char *word; } cases[] = {
+      {16, 2, "format version"},
+      {24, -1, "global id"},
+      {56, 7, "not held"},           /* target A: global beam 7 */
+      {64, 999, "not held"},         /* target A: segment 999 */
+      {88, 5000, "hop count"},
+      {96, 3, "groups"},             /* groups (3, 1) */
+      {112, 12345, "parameters"},    /* the parameters' fingerprint */
+      {120, 8, "history length"},
+      {128, 2, "could not have written"},  /* history tag 2 */
+  };
+  for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
+    craft(bad, buf, size, cases[c].at, &cases[c].v);
+    expect(b2b_model_migration_unpack(m1, bad, size, &ch, msg, sizeof msg), B2B_ERR_RANGE, msg,
+           cases[c].word);
+    ck_assert_int_eq(ch, 7);
+  }
+  /* target B on A's beam, segment 12 (rank 1's): one beam, self-contact off */
+  {
+    const int64_t beam0 = 0, seg12 = 12;
+    unsigned char *two = malloc((size_t)size);
+    craft(two, buf, size, 72, &beam0);
+    craft(bad, two, size, 80, &seg12);
+    free(two);
+    expect(b2b_model_migration_unpack(m1, bad, size, &ch, msg, sizeof msg), B2B_ERR_RANGE, msg,
+           "never pairs");
+  }
+  /* a normal of length 2 in the history */
+  {
+    const double two = 2.0;
+    craft(bad, buf, size, 128 + 8 * 2, &two);
+    expect(b2b_model_migration_unpack(m1, bad, size, &ch, msg, sizeof msg), B2B_ERR_RANGE, msg,
+           "could not have written");
+  }
+  /* a restart buffer is no packed contact */
+  int64_t rs;
+  ok(b2b_model_save_size(d.m[0], &rs, msg, sizeof msg), msg);
+  unsigned char *rbuf = malloc((size_t)rs);
+  ok(b2b_model_save(d.m[0], rbuf, rs, msg, sizeof msg), msg);
+  expect(b2b_model_migration_unpack(m1, rbuf, rs, &ch, msg, sizeof msg), B2B_ERR_RANGE, msg,
+         "not a packed b2b contact");
+  free(rbuf);
+  /* a contact of a model with other parameters (friction 0.4) */
+  {
+    b2b_params *q = tst_params_friction(B2B_LAW_LINEAR, 1e3, 0.0, 0.4, 2e3);
+    arc_scene a2;
+    arc_setup(&a2, B2B_CURVE_HERMITE_NODAL);
+    dist d2;
+    run_to_migration(&d2, &a2, q);
+    int64_t s2;
+    unsigned char *b2 = pack0(&d2, &s2);
+    expect(b2b_model_migration_unpack(m1, b2, s2, &ch, msg, sizeof msg), B2B_ERR_RANGE, msg,
+           "parameters differ");
+    free(b2);
+    dist_free(&d2);
+    b2b_params_destroy(&q);
+  }
+  ck_assert_int_eq(ch, 7);
+  /* nothing of it reached the model */
+  ok(b2b_model_update(m1, a.x, 3, a.sc.n_nodes, 1, msg, sizeof msg), msg);
+  ck_assert(record(m1, r1) == n0 && memcmp(r0, r1, n0) == 0);
+  free(bad);
+  free(buf);
+  dist_free(&d);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
+/* ---------------------------------------------------------------------------
+ * 5. The audit and the crossing count of rank models.
+ * ------------------------------------------------------------------------- */
+typedef struct {
+  int64_t g[4];
+  double overlap;
+  int reason;
+} finding;
+
+/* The findings of a rank model in global ids (local beam -> piece). */
+static int rank_findings(const dist *d, int r, finding *out, int max) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  int n;
+  ok(b2b_model_audit(d->m[r], 0.01, &n, NULL, NULL, NULL, 0, msg, sizeof msg), msg);
+  ck_assert_int_le(n, max);
+  int pairs[4 * 256], reasons[256];
+  double overlap[256];
+  ok(b2b_model_audit(d->m[r], 0.01, &n, pairs, overlap, reasons, 256, msg, sizeof msg), msg);
+  for (int k = 0; k < n; ++k) {
+    /* a local (beam, segment) to global ids through a contact-free route:
+     * the pieces as dist_build made them are in order, so count segments */
+    for (int side = 0; side < 2; ++side) {
+      const int lb = pairs[4 * k + 2 * side], ls = pairs[4 * k + 2 * side + 1];
+      out[k].g[2 * side] = d->piece_gbeam[r][lb];
+      out[k].g[2 * side + 1] = d->piece_first[r][lb] + ls;
+    }
+    out[k].overlap = overlap[k];
+    out[k].reason = reasons[k];
+  }
+  return n;
+}
+
+START_TEST(audit_and_crossing) {
+  char msg[B2B_ERRMSG_LEN] = "";
+  /* beam 0 along x; beam 1 parallel to it, overlapping (PARALLEL findings);
+   * beam 2 along y, above beam 0, pushed through it in one step (CROSSED) */
+  enum { N0 = 11, N1 = 11, N2 = 7 };
+  static double x[3 * (N0 + N1 + N2)];
+  tst_scene sc;
+  memset(&sc, 0, sizeof sc);
+  sc.n_beams = 3;
+  sc.n_nodes = N0 + N1 + N2;
+  sc.x = x;
+  const int count[3] = {N0, N1, N2}, group[3] = {0, 1, 1};
+  int first = 0;
+  for (int b = 0; b < 3; ++b) {
+    sc.first[b] = first;
+    sc.count[b] = count[b];
+    sc.kind[b] = B2B_CURVE_HERMITE_NODAL;
+    sc.group[b] = group[b];
+    sc.radius[b] = 0.1;
+    sc.exclusion[b] = -1.0;
+    first += count[b];
+  }
+  for (int k = 0; k < N0; ++k) {
+    x[3 * k] = 0.3 * k;
+    x[3 * k + 1] = x[3 * k + 2] = 0.0;
+  }
+  for (int k = 0; k < N1; ++k) {
+    x[3 * (N0 + k)] = 0.3 * k + 0.05;
+    x[3 * (N0 + k) + 1] = 0.15;  /* axes 0.15 apart, radii 0.1: overlap 0.05 */
+    x[3 * (N0 + k) + 2] = 0.0;
+  }
+  for (int k = 0; k < N2; ++k) {
+    x[3 * (N0 + N1 + k)] = 1.62;
+    x[3 * (N0 + N1 + k) + 1] = 0.2 * (k - 3) - 0.6;
+    x[3 * (N0 + N1 + k) + 2] = 0.25;
+  }
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  b2b_model *single = tst_model(&sc, p, 0);
+  ok(b2b_model_set_real(single, "search_margin", 0.05, msg, sizeof msg), msg);
+  dist d;
+  dist_init(&d, &sc, 2);
+  for (int b = 0; b < 3; ++b)
+    for (int s = 0; s < d.nseg[b]; ++s) d.owner[b][s] = b == 0 ? s * 2 / d.nseg[0] : 1 - (s & 1);
+  dist_build(&d, p, 0, 1.0);
+  for (int step = 0; step < 2; ++step) {
+    if (step == 1)
+      for (int k = 0; k < N2; ++k) x[3 * (N0 + N1 + k) + 2] = -0.18;  /* through beam 0 */
+    tst_update(single, &sc, 1);
+    dist_update(&d, x, sc.n_nodes, 1, NULL);
+    compare(single, &d, step ? "crossed" : "parallel");  /* CROSSED summed too */
+    int c1[16];
+    ok(b2b_model_stats(single, c1, NULL, msg, sizeof msg), msg);
+    ck_assert_int_eq(c1[B2B_COUNT_CROSSED], step);
+    int n1, pairs1[4 * 256], reasons1[256];
+    double overlap1[256];
+    ok(b2b_model_audit(single, 0.01, &n1, pairs1, overlap1, reasons1, 256, msg, sizeof msg), msg);
+    ck_assert_msg(n1 >= 8, "the parallel beams overlap (%d findings)", n1);
+    finding f[MAXR][256];
+    int nf[MAXR], total = 0;
+    for (int r = 0; r < 2; ++r) total += nf[r] = rank_findings(&d, r, f[r], 256);
+    ck_assert_int_eq(total, n1);
+    for (int k = 0; k < n1; ++k) {
+      int hits = 0;
+      for (int r = 0; r < 2; ++r)
+        for (int j = 0; j < nf[r]; ++j) {
+          int same = 1;
+          for (int i = 0; i < 4; ++i) same &= f[r][j].g[i] == pairs1[4 * k + i];
+          if (!same) continue;
+          ++hits;
+          ck_assert(f[r][j].overlap == overlap1[k] && f[r][j].reason == reasons1[k]);
+        }
+      ck_assert_msg(hits == 1, "finding %d is on %d ranks", k, hits);
+    }
+    ok(b2b_model_commit(single, msg, sizeof msg), msg);
+    dist_commit(&d);
+  }
+  dist_free(&d);
+  b2b_model_destroy(&single);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("model_partition");
   TCase *tc = tcase_create("ranks");
@@ -519,6 +1011,11 @@ int main(void) {
   tcase_add_test(tc, network_two_ranks);
   tcase_add_test(tc, network_three_ranks);
   tcase_add_test(tc, slide_across_ranks);
+  tcase_add_test(tc, received_contacts);
+  tcase_add_test(tc, rank_restart);
+  tcase_add_test(tc, hostile_setup);
+  tcase_add_test(tc, hostile_buffers);
+  tcase_add_test(tc, audit_and_crossing);
   suite_add_tcase(s, tc);
   return tst_run_suite(s);
 }
