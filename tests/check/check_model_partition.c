@@ -287,7 +287,8 @@ static int compare(const b2b_model *single, const dist *d, const char *what) {
   ok(b2b_model_stats(single, c1, t1, msg, sizeof msg), msg);
   const int additive[] = {B2B_COUNT_ACTIVE, B2B_COUNT_OPEN, B2B_COUNT_LOST, B2B_COUNT_HANDOVERS,
                           B2B_COUNT_STICK, B2B_COUNT_SLIP, B2B_COUNT_CROSSED, B2B_COUNT_LINE,
-                          B2B_COUNT_PARALLEL};
+                          B2B_COUNT_PARALLEL, B2B_COUNT_OUTSIDE, B2B_COUNT_NOT_CONVERGED,
+                          B2B_COUNT_NO_NORMAL, B2B_COUNT_EVALUATED};
   for (size_t i = 0; i < sizeof additive / sizeof additive[0]; ++i) {
     int sum = 0;
     for (int r = 0; r < d->nr; ++r) sum += counts[r][additive[i]];
