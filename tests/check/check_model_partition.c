@@ -709,6 +709,13 @@ START_TEST(hostile_setup) {
   expect(b2b_model_set_ghost_segments(m, 0, 5, 1, msg, sizeof msg), B2B_ERR_RANGE, msg, "beyond");
   expect(b2b_model_set_ghost_segments(m, 0, -1, 1, msg, sizeof msg), B2B_ERR_RANGE, msg, "beyond");
   expect(b2b_model_set_ghost_segments(m, 0, 3, 3, msg, sizeof msg), B2B_ERR_RANGE, msg, "beyond");
+  {  /* unpack needs a finalized model */
+    unsigned char junk[16] = {0};
+    int ch = 7;
+    expect(b2b_model_migration_unpack(m, junk, 16, &ch, msg, sizeof msg), B2B_ERR_STATE, msg,
+           "not finalized");
+    ck_assert_int_eq(ch, 7);
+  }
   /* finalize: ghosts without ids */
   ok(b2b_model_set_ghost_segments(m, 0, 0, 2, msg, sizeof msg), msg);
   expect(b2b_model_finalize(m, 18, msg, sizeof msg), B2B_ERR_STATE, msg, "no beam has a global id");
