@@ -141,6 +141,12 @@ class Updater {
   std::vector<std::vector<double>> records_, tangent_blocks_;
   std::vector<double> fresh_;             // zeros: a fresh history
   int hops_ = 0, lost_ = 0;
+  // [partition] the committed state the evaluation and the handovers read
+  // (the model's, with the contacts received from other ranks:
+  // migration.hpp), and the contacts whose walk reached a pair another rank
+  // evaluates
+  CommittedView view_;
+  std::vector<Migrant> migrants_;
   const std::vector<Box>& search_boxes() const { return has_committed_ ? ws_.swept : ws_.boxes; }
   const std::vector<std::pair<int, int>>& candidates() const {
     return rebuilt_ ? new_candidates_ : m_.candidates_;
@@ -216,6 +222,8 @@ Problem Updater::run() {
   // parallel region) leaves the model as it was, like a Problem: the
   // firewall turns it into B2B_ERR_NOMEM.
   try {
+    build_view(m_.committed_, m_.migration_, view_);  // [partition]
+    lost_ += view_.conflicts;
     pb = gather();
     if (!pb.status) {
       broad_phase();
@@ -415,7 +423,7 @@ bool Updater::work_item(size_t k, Item& it, bool* is_near) const {
     const std::pair<int, int>& c = cand[k];
     const int gp = m_.group_pair_index(c.first, c.second);
     *is_near = near(c.first, c.second, gp);
-    sp = m_.committed_.find(pair_key(c.first, c.second));
+    sp = view_.state->find(pair_key(c.first, c.second));
     // The contacts of the last commit are evaluated whatever the boxes say:
     // their pair tells where the point went.
     if (!*is_near && !(sp && sp->status == B2B_CONTACT_ACTIVE)) return false;
@@ -430,7 +438,7 @@ bool Updater::work_item(size_t k, Item& it, bool* is_near) const {
   if (sp) {
     it.a = sp->a;
     it.b = sp->b;
-    it.hist_old = m_.committed_.history(*sp);
+    it.hist_old = view_.state->history(*sp);
     it.hist_old_len = sp->length;
   }
   return true;
@@ -664,7 +672,7 @@ Problem Updater::evaluate_all() {
   // in key order: the search returns its pairs sorted, a < b).
   const std::vector<std::pair<int, int>>& cand = candidates();
   extras_.clear();
-  for (const StoredPair& sp : m_.committed_.pairs) {
+  for (const StoredPair& sp : view_.state->pairs) {
     if (sp.status != B2B_CONTACT_ACTIVE) continue;
     const std::pair<int, int> c(std::min(sp.a, sp.b), std::max(sp.a, sp.b));
     if (!std::binary_search(cand.begin(), cand.end(), c)) extras_.push_back(&sp);
@@ -844,7 +852,7 @@ Problem Updater::unkept_status(int a, int b, int* status) {
 }
 
 Problem Updater::handovers() {
-  const ContactState& committed = m_.committed_;
+  const ContactState& committed = *view_.state;  // [partition] with the received contacts
   std::vector<uint64_t> claimed;  // targets a handover has taken in this update
   auto find_item = [this](uint64_t key) -> Item* {
     auto it = std::lower_bound(items_.begin(), items_.end(), key,
@@ -865,6 +873,9 @@ Problem Updater::handovers() {
     double hist[pair::kHistoryLengthMax];
     std::memcpy(hist, committed.history(sp), gp.hist_len * sizeof(double));
     int a = sp.a, b = sp.b, hops = 0;
+    // [partition] a received contact has walked that far on other ranks
+    const Migration::Received* from = view_.received(m_.migration_, sp.key);
+    const int hops_before = from ? from->m.hops : 0;
     // (Its record has them: it was evaluated with its committed history.)
     double xi = own->rec[kRecXi], eta = own->rec[kRecEta];
     bool found = false;
@@ -882,8 +893,19 @@ Problem Updater::handovers() {
         if (moved) s = next;
         ++hops;
       }
-      if (!moved || hops > m_.max_hops) break;
+      if (!moved || hops + hops_before > m_.max_hops) break;
       const uint64_t key = pair_key(a, b);
+      // [partition] a pair another rank evaluates: the contact migrates
+      // there (migration.hpp), and is not lost; one whose other segment is
+      // padding here is (the ghost layer is too thin)
+      if (!m_.partition_.evaluates(a, b)) {
+        if (m_.partition_.owned_elsewhere(a, b)) {
+          migrants_.push_back(make_migrant(m_.table_, m_.partition_, sp.a, sp.b, from, a, b,
+                                           hops_before + hops, gp.ga, gp.gb, hist, gp.hist_len));
+          found = true;
+        }
+        break;
+      }
       const StoredPair* target = committed.find(key);
       if (target && target->status == B2B_CONTACT_ACTIVE) {  // its own contact: merged
         found = true;
@@ -1033,6 +1055,8 @@ void Updater::finish() {
   // goes to the next update.
   m.current_coords_.swap(cur_);
   ws_.coords.swap(cur_);
+  m.migration_.outgoing = std::move(migrants_);  // [partition]
+  ++m.migration_.updates;
   m.want_tangent_ = want_tangent_;
   m.updated_ = true;
   m.has_results_ = true;
