@@ -507,6 +507,10 @@ B2B_EXPORT int b2b_model_stats(const b2b_model *model, int counts[16], double to
  *     OUTSIDE_BOTH     the closest point is a joint or a beam end (the
  *                      segments on both sides of it point away: a convex
  *                      joint of straight segments)
+ *     OTHER_RANK       (a rank's model of a distributed one) the closest
+ *                      point is a joint, and a pair across it belongs to
+ *                      another rank, whose contact may carry the overlap
+ *                      (this model cannot see it): the host asks that rank
  *     OTHER            none of these (the element found no force)
  * A host runs it after the converged update of a step and before
  * b2b_model_commit (after the commit the committed configuration is the
@@ -526,12 +530,168 @@ enum {
   B2B_AUDIT_OUTSIDE_BOTH = 2,
   B2B_AUDIT_NEVER_EVALUATED = 3,
   B2B_AUDIT_EXCLUDED_SELF = 4,
-  B2B_AUDIT_CROSSED = 5
+  B2B_AUDIT_CROSSED = 5,
+  B2B_AUDIT_OTHER_RANK = 6 /* ABI 1.4, distributed models: the closest point is on a
+                              joint and a pair across it is evaluated by another rank
+                              (whose contact may carry the overlap: ask it) */
 };
 
 B2B_EXPORT int b2b_model_audit(const b2b_model *model, double tolerance, int *n_found,
                                int *pairs, double *overlap, int *reasons, int capacity,
                                char *errmsg, int errmsg_len);
+
+/*
+ * Distributed models (ABI 1.4; doc/distributed.md)
+ * -------------------------------------------------
+ * For a host whose mesh is split over MPI ranks. b2b does no communication:
+ * each rank builds a model of its own segments and of the ghost segments it
+ * needs, and the host exchanges the ghosts' coordinates and the migrating
+ * contacts (below) itself.
+ *
+ * Global ids. Every segment has a global id (global beam, segment within
+ * that beam), the same on every rank. A local beam is a piece of a global
+ * beam (b2b_model_set_beam_global); its local segment s is segment
+ * first_segment + s of the global beam. Beams are added in increasing
+ * global-beam order, pieces of one global beam in increasing segment order
+ * and not overlapping: the local order of segments is then the global
+ * order restricted to the model, and every order-dependent result (the
+ * orientation A/B of a pair, the order of the contacts, sums) is that of
+ * a single model holding everything.
+ *
+ * Ownership. A pair of segments is computed by exactly one rank: the rank
+ * that owns the segment with the smaller global id (lexicographic on
+ * (global beam, segment)). A model holds its own segments and ghosts
+ * (b2b_model_set_ghost_segments: owned by another rank); it evaluates
+ * exactly the pairs whose smaller segment is its own and whose other
+ * segment is present and not padding. So, summed over the ranks, each pair
+ * is evaluated once, its contact listed once and assembled once.
+ *
+ * Cuts and padding. Where a piece ends but its global beam goes on (a cut,
+ * start_cut / end_cut), the piece's first / last segment is padding: its
+ * patch would need the node beyond the cut, so it only lends its nodes to
+ * its neighbour's patch (a Hermite segment reads one node beyond each of its
+ * ends) and is never paired. A padding segment must be a ghost (finalize
+ * says so otherwise): a piece reaches one segment beyond the segments it
+ * needs. No end contact is held at a cut. A closed beam cannot be cut.
+ *
+ * Ghost depth. A rank's ghosts are every segment of another rank that can
+ * come within contact reach of one of its own segments before the next
+ * repartition: r_A + r_B + g0 + the search margin + how far a node may move
+ * (doc/distributed.md), plus one padding segment beyond each cut.
+ *
+ * Not supported: self-contact between two pieces of one global beam (the
+ * segments of one global beam in different local beams are never paired;
+ * self-contact within a piece works), line-contact histories across a
+ * partition (a line pair's integration points take over no history from a
+ * pair another rank owns; they start fresh), a cut closed beam.
+ *
+ * Stats, audit and crossing count per rank: B2B_COUNT_ACTIVE, OPEN,
+ * OUTSIDE, ..., CROSSED, LOST, HANDOVERS and the totals count this model's
+ * own pairs (the host sums them over the ranks; MIN_GAP: the smallest);
+ * CANDIDATES, FAR and SEARCH_BUILDS are this model's search's (not
+ * additive). b2b_model_audit reports only pairs this model evaluates.
+ *
+ * Migration. A committed contact whose handover (the walk of its point from
+ * segment to segment, see Update) reaches a pair this model does not
+ * evaluate is "migrating": not lost (not in B2B_COUNT_LOST), not assembled
+ * here. The host packs it and sends it to the rank that owns its target
+ * pair, which unpacks it: there it serves as the committed history of the
+ * target pair, exactly as the handed-over history serves in a single model
+ * (evaluated with it; if the point is not there either, the walk goes on
+ * from there). A walk that reaches a pair whose smaller segment is this
+ * model's own but whose other segment is padding is lost (counted): the
+ * ghost layer is too thin there.
+ *
+ * Host protocol in one Newton iteration (doc/distributed.md):
+ *   1. every rank: b2b_model_update;
+ *   2. every rank: for k < b2b_model_migration_count: migration_info,
+ *      migration_pack, send to the owner of target (the rank owning the
+ *      smaller of target's two segments);
+ *   3. every rank: b2b_model_migration_unpack of each buffer it received,
+ *      then b2b_model_migration_unpack(model, NULL, 0, &changed) (the end
+ *      of the round: drops the received contacts that no rank sent again
+ *      since the last update);
+ *   4. if any rank's changed is 1 (MPI_Allreduce, MPI_LOR), every rank
+ *      updates again with the same coordinates and goes to 2 (a contact
+ *      crossing one partition boundary in a step needs one extra update;
+ *      each repetition carries contacts one hop further, so it ends);
+ *   5. assemble: each rank its own contacts, with the host's global
+ *      equation numbers (eq holds them for the rank's local nodes).
+ * Received contacts serve in every update until the next commit (which
+ * keeps their results, as for any contact) or revert (which drops them).
+ *
+ * Identity of a migrating contact: the committed contact it comes from
+ * (its source pair, in global ids). Unpacking a contact of the same source
+ * again replaces the one received before (its walk may have reached another
+ * pair since); *changed = 1 when this changed the model's received set (a
+ * new source, or another target, history or hop count).
+ */
+
+/* Local beam `beam` is a piece of global beam `global_beam` (>= 0, the
+ * host's numbering, the same on every rank); its first local segment is
+ * segment `first_segment` (>= 0) of the global beam. start_cut / end_cut (0
+ * or 1): the local beam's first / last node is not an end of the global
+ * beam but a cut (the beam goes on, on another rank): no end contact there,
+ * and the segment at a cut is padding (never paired; it must be a ghost).
+ * start_cut = 1 needs first_segment > 0; a closed beam cannot be cut (and
+ * starts at segment 0). first_segment + the beam's segments <= INT_MAX.
+ * Before finalize; a second call for a beam replaces the first. Either
+ * every beam of a model gets this call or none (then a beam's global id is
+ * its local index and first_segment 0: a serial model); finalize checks it,
+ * and the global order (B2B_ERR_RANGE naming both beams: out of order or
+ * overlapping pieces; pieces of one global beam must agree on kind, radius,
+ * group and self-contact). */
+B2B_EXPORT int b2b_model_set_beam_global(b2b_model *model, int beam, int64_t global_beam,
+                                         int first_segment, int start_cut, int end_cut,
+                                         char *errmsg, int errmsg_len);
+/* Local segments [first, first + count) of `beam` are ghosts: owned by
+ * another rank, present for the search and for pairs with this rank's
+ * segments. 0 <= first, count >= 0, first + count <= the beam's segments
+ * (B2B_ERR_RANGE). Before finalize; ranges accumulate (overlaps are
+ * harmless). A model with ghosts needs global ids (finalize:
+ * B2B_ERR_STATE). */
+B2B_EXPORT int b2b_model_set_ghost_segments(b2b_model *model, int beam, int first, int count,
+                                            char *errmsg, int errmsg_len);
+/* Contact k of the last update (as b2b_model_get_contact) in global ids:
+ * global beam and segment of its A, then of its B. */
+B2B_EXPORT int b2b_model_get_contact_global(const b2b_model *model, int k, int64_t pair[4],
+                                            char *errmsg, int errmsg_len);
+
+/* The number of migrating contacts of the last update (0 for a serial
+ * model, and after a commit: the committed state no longer holds them).
+ * B2B_ERR_STATE as b2b_model_contact_count (before the first update, after
+ * a revert or restore). */
+B2B_EXPORT int b2b_model_migration_count(const b2b_model *model, int *n, char *errmsg,
+                                         int errmsg_len);
+/* Migrating contact k (0 <= k < n): target[4] = global beam and segment of
+ * the target pair's A, then of its B (its owner: the owner of the smaller),
+ * and *size, the bytes of its packed form. Either output may be NULL. */
+B2B_EXPORT int b2b_model_migration_info(const b2b_model *model, int k, int64_t target[4],
+                                        int64_t *size, char *errmsg, int errmsg_len);
+/* Packs migrating contact k into buffer (size >= its size from
+ * migration_info, else B2B_ERR_SIZE). The packed form is native byte order
+ * (ranks of one machine type), checksummed, and names its source, its
+ * target, its group pair (with a fingerprint of the pair's parameters) and
+ * its history. */
+B2B_EXPORT int b2b_model_migration_pack(const b2b_model *model, int k, void *buffer,
+                                        int64_t size, char *errmsg, int errmsg_len);
+/* A packed contact from another rank (size: exactly its packed size). It
+ * serves as the committed history of its target pair in this model's
+ * following updates, exactly as the handed-over history serves in a single
+ * model, until the next commit (which keeps its result, as for any contact)
+ * or revert (which drops it); a target pair that holds its own active
+ * committed contact keeps it (as in a single model). Unpacking a contact of
+ * the same source again replaces it; *changed = 1 if the model's set of
+ * received contacts changed, else 0. buffer NULL with size 0 ends a round
+ * of receiving (Host protocol): the received contacts not unpacked since
+ * the last update are dropped, *changed = 1 if there were any. A buffer
+ * that is not a valid packed contact for this model (truncated, corrupted,
+ * another format, sizes, a target it does not hold or does not evaluate, a
+ * group pair or parameters other than the target pair's, a history length
+ * or history that does not match) is B2B_ERR_RANGE with a message saying
+ * which, the model and *changed untouched. After finalize. */
+B2B_EXPORT int b2b_model_migration_unpack(b2b_model *model, const void *buffer, int64_t size,
+                                          int *changed, char *errmsg, int errmsg_len);
 
 #ifdef __cplusplus
 }

@@ -132,6 +132,10 @@ int report_model_problem(const Reporter& r, const b2b_model* model, const md::Pr
     case W::Increment:
       return r.fail(pb.status, "node %d has a non-finite prescribed %c increment du (%g)",
                     pb.node + o, kAxis[pb.axis], pb.value);
+    case W::Partition:  // [partition] worded in capi_partition.cpp
+      return report_partition_problem(r, model, pb);
+    case W::Migration:
+      return r.fail(pb.status, "the packed contact is not accepted: %s", pb.detail);
     case W::None:
       break;
   }

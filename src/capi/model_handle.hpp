@@ -28,5 +28,8 @@ int check_tangents(const Reporter& r, const b2b_model* model);
 // Words a model::Problem (status != 0) for the caller.
 int report_model_problem(const Reporter& r, const b2b_model* model, const model::Problem& pb);
 
+// [partition] The same for a Problem::What::Partition (capi_partition.cpp).
+int report_partition_problem(const Reporter& r, const b2b_model* model, const model::Problem& pb);
+
 }  // namespace capi
 }  // namespace b2b

@@ -84,6 +84,10 @@ bool Auditor::may_touch(int a, int b) const {
   const Beam &ba = m_.beam(sa.beam), &bb = m_.beam(sb.beam);
   if (!m_.group_pair(ba.group, bb.group)) return false;
   if (table_.share_node(a, b)) return false;
+  // [partition] a rank's model audits the pairs it evaluates (each pair on
+  // one rank); pieces of one global beam never pair
+  const Partition& part = m_.partition();
+  if (!part.evaluates(a, b) || part.other_piece(sa, sb)) return false;
   return sa.beam != sb.beam || ba.self_contact;
 }
 
@@ -130,7 +134,17 @@ int Auditor::reason(int a, int b, const SegmentClosest& c) {
   if (std::sqrt(dot(cx, cx)) < gp->params.sin_parallel_angle * speeds)
     return B2B_AUDIT_PARALLEL;
   // 5. closest point on a joint or beam end with no force on either side
-  if (at_segment_end(c.xi) || at_segment_end(c.eta)) return B2B_AUDIT_OUTSIDE_BOTH;
+  if (at_segment_end(c.xi) || at_segment_end(c.eta)) {
+    // [partition] ... that this model can see: a pair across the joint is
+    // another rank's, whose contact may carry the overlap
+    const int ea = at_segment_end(c.xi), eb = at_segment_end(c.eta);
+    const int na = ea ? table_.neighbour(a, ea) : -1, nb = eb ? table_.neighbour(b, eb) : -1;
+    for (int x : {a, na})
+      for (int y : {b, nb})
+        if (x >= 0 && y >= 0 && x != y && m_.partition().owned_elsewhere(x, y))
+          return B2B_AUDIT_OTHER_RANK;
+    return B2B_AUDIT_OUTSIDE_BOTH;
+  }
   return B2B_AUDIT_OTHER;
 }
 

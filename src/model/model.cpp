@@ -131,6 +131,8 @@ Problem Model::finalize(int n_nodes) {
   BeamTable table;
   std::vector<Beam> beams = beams_;
   table.build(beams, dense_group);
+  // [partition] global ids, ghosts and padding checked against the beams
+  if (Problem ppb = partition_.finalize(beams); ppb.status) return ppb;
 
   double g0 = 0.0;
   for (const GroupPair& g : group_pairs_) g0 = std::max(g0, pair::contact_start_gap(g.params));
@@ -202,6 +204,8 @@ bool Model::may_pair_with_arcs(int a, int b, const std::vector<double>& lo,
   if (group_pair_index(a, b) < 0) return false;
   if (table_.share_node(a, b)) return false;
   const SegmentInfo &sa = table_.segment(a), &sb = table_.segment(b);
+  // [partition] the ownership rule; pieces of one global beam never pair
+  if (!partition_.evaluates(a, b) || partition_.other_piece(sa, sb)) return false;
   if (sa.beam != sb.beam) return true;
   const Beam& beam = beams_[sa.beam];
   if (!beam.self_contact || lo.empty()) return false;
@@ -216,6 +220,7 @@ void Model::commit() {
   committed_coords_ = std::move(coords);
   if (table_.arcs_measured()) arcs_committed_ = true;
   updated_ = false;
+  migration_.clear();  // [partition] received contacts are in the committed state now
 }
 
 void Model::revert() {
@@ -224,6 +229,7 @@ void Model::revert() {
   // measured in the configuration of the first update that is committed.
   if (!arcs_committed_) table_.set_arcs({}, {}, {});
   trial_ = ContactState();
+  migration_.clear();  // [partition] received and migrating contacts go with the update
   updated_ = false;
   has_results_ = false;
   contacts_.clear();

@@ -16,6 +16,8 @@
 #include "../pair/params.hpp"
 #include "beam_table.hpp"
 #include "contact_state.hpp"
+#include "migration.hpp"
+#include "partition.hpp"
 #include "search.hpp"
 
 namespace b2b {
@@ -52,8 +54,11 @@ struct Problem {
     CurrentCoordinate, // node, axis, value: x + u beyond B2B_COORD_MAX
     Profile,           // row, col: a tangent entry outside the host's profile
     ProfilePointer,    // row (equation), value: an invalid jp entry
-    Increment          // node, axis, value: a non-finite prescribed increment
+    Increment,         // node, axis, value: a non-finite prescribed increment
+    Partition,         // code (PartitionIssue), beam, other_beam, segment (partition.hpp)
+    Migration          // detail: a packed contact not accepted (migration.hpp)
   } what = What::None;
+  int code = 0;
   int beam = -1, segment = -1, node = -1, slot_a = -1, slot_b = -1, axis = -1;
   int other_beam = -1, other_segment = -1;
   int row = -1, col = -1;  // equations of a tangent entry outside a band
@@ -115,6 +120,13 @@ class Model {
   void commit();
   void revert();
 
+  // --- distributed models (partition.hpp, migration.hpp) ---
+  Partition& partition() { return partition_; }
+  const Partition& partition() const { return partition_; }
+  const Migration& migration() const { return migration_; }
+  // A received contact's end of round (b2b_model_migration_unpack(NULL, 0)).
+  bool end_migration_round() { return migration_.end_round(); }
+
   // --- restart ---
   int64_t save_size() const;
   void save(unsigned char* buffer) const;
@@ -161,8 +173,14 @@ class Model {
   int counts_[16] = {0};
   double totals_[8] = {0};
 
+  // Distributed models: global ids, ghosts and padding (set up before
+  // finalize), the migrating and the received contacts.
+  Partition partition_;
+  Migration migration_;
+
   friend class Updater;
   friend struct RestartCodec;
+  friend struct MigrationCodec;
   // The group pair of two segments' groups (index into group_pairs_), or -1.
   int group_pair_index(int seg_a, int seg_b) const {
     const uint64_t key = dense_key(table_.segment(seg_a).group, table_.segment(seg_b).group);

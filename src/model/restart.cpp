@@ -243,6 +243,7 @@ struct RestartCodec {
     m.arcs_committed_ = !lo.empty();
     m.table_.set_arcs(std::move(lo), std::move(hi), std::move(arc_total));
     m.trial_ = ContactState();
+    m.migration_.clear();  // [partition] they belonged to the replaced state
     m.updated_ = false;
     m.has_results_ = false;
     m.contacts_.clear();
@@ -266,6 +267,10 @@ uint64_t Model::fingerprint() const {
     mix(&b.radius, sizeof b.radius);
     mix(&b.exclusion, sizeof b.exclusion);
   }
+  // [partition] a rank's model: its global ids, ghosts and padding (none in
+  // a serial model, whose fingerprint stays what it was)
+  const std::vector<int64_t> sig = partition_.signature();
+  if (!sig.empty()) mix(sig.data(), sig.size() * sizeof(int64_t));
   // Every group pair with every parameter of its set (field by field: no
   // padding bytes), in the order of the host's group numbers.
   for (const auto& entry : gp_by_host_) {

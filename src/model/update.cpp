@@ -107,6 +107,11 @@ class Updater {
   std::vector<std::vector<double>> records_, tangent_blocks_;
   std::vector<double> fresh_;             // zeros: a fresh history
   int hops_ = 0, lost_ = 0, near_ = 0;
+  // [partition] the committed state near_pairs and handovers read (the
+  // model's, with the contacts received from other ranks: migration.hpp),
+  // and the contacts whose walk reached a pair another rank evaluates
+  CommittedView view_;
+  std::vector<Migrant> migrants_;
   const std::vector<Box>& search_boxes() const { return has_committed_ ? swept_ : boxes_; }
 
   int nt() const {
@@ -144,6 +149,9 @@ class Updater {
   Problem crossed_line_pair(Item& it);
   Problem evaluate_with(Item& it, std::vector<double> hist);
   Problem handovers();
+  // [partition] the contact of sp (received as from, or null) leaving for (a, b)
+  Migrant migrant(const StoredPair& sp, const Migration::Received* from, int a, int b, int hops,
+                  const GroupPair& gp, const double* hist) const;
   Problem overflow(const Item& item) const;
   Problem totals_overflow() const;
   void finish();
@@ -166,6 +174,8 @@ Problem Updater::run() {
   // parallel region) leaves the model as it was, like a Problem: the
   // firewall turns it into B2B_ERR_NOMEM.
   try {
+    build_view(m_.committed_, m_.migration_, view_);  // [partition]
+    lost_ += view_.conflicts;
     pb = gather();
     if (!pb.status) {
       broad_phase();
@@ -300,7 +310,7 @@ void Updater::broad_phase() {
 void Updater::near_pairs() {
   const std::vector<std::pair<int, int>>& cand = rebuilt_ ? new_candidates_ : m_.candidates_;
   const double s = m_.effective_margin();
-  const ContactState& committed = m_.committed_;
+  const ContactState& committed = *view_.state;  // [partition] with the received contacts
   // The group pair of a candidate within contact reach, or -1.
   const auto near = [this, s](const std::pair<int, int>& c) {
     const int gp = m_.group_pair_index(c.first, c.second);
@@ -679,7 +689,7 @@ Problem Updater::crossed_line_pair(Item& it) {
 }
 
 Problem Updater::handovers() {
-  const ContactState& committed = m_.committed_;
+  const ContactState& committed = *view_.state;  // [partition] with the received contacts
   std::vector<uint64_t> claimed;  // targets a handover has taken in this update
   auto find_item = [this](uint64_t key) -> Item* {
     auto it = std::lower_bound(items_.begin(), items_.end(), key,
@@ -700,6 +710,9 @@ Problem Updater::handovers() {
     double hist[pair::kHistoryLengthMax];
     std::memcpy(hist, committed.history(sp), gp.hist_len * sizeof(double));
     int a = sp.a, b = sp.b, hops = 0;
+    // [partition] a received contact has walked that far on other ranks
+    const Migration::Received* from = view_.received(m_.migration_, sp.key);
+    const int hops_before = from ? from->m.hops : 0;
     // (Its record has them: it was evaluated with its committed history.)
     double xi = own->rec[kRecXi], eta = own->rec[kRecEta];
     bool found = false;
@@ -717,8 +730,18 @@ Problem Updater::handovers() {
         if (moved) s = next;
         ++hops;
       }
-      if (!moved || hops > m_.max_hops) break;
+      if (!moved || hops + hops_before > m_.max_hops) break;
       const uint64_t key = pair_key(a, b);
+      // [partition] a pair another rank evaluates: the contact migrates
+      // there (migration.hpp), and is not lost; one whose other segment is
+      // padding here is (the ghost layer is too thin)
+      if (!m_.partition_.evaluates(a, b)) {
+        if (m_.partition_.owned_elsewhere(a, b)) {
+          migrants_.push_back(migrant(sp, from, a, b, hops_before + hops, gp, hist));
+          found = true;
+        }
+        break;
+      }
       const StoredPair* target = committed.find(key);
       if (target && target->status == B2B_CONTACT_ACTIVE) {  // its own contact: merged
         found = true;
@@ -766,6 +789,25 @@ Problem Updater::handovers() {
                        items_.end(), by_key);
   }
   return Problem();
+}
+
+Migrant Updater::migrant(const StoredPair& sp, const Migration::Received* from, int a, int b,
+                         int hops, const GroupPair& gp, const double* hist) const {
+  const Partition& part = m_.partition_;
+  Migrant mg;
+  const int ends[4] = {sp.a, sp.b, a, b};
+  for (int k = 0; k < 4; ++k) {
+    const SegmentInfo& s = m_.table_.segment(ends[k]);
+    int64_t* ids = k < 2 ? mg.source + 2 * k : mg.target + 2 * (k - 2);
+    ids[0] = part.global_beam(s);
+    ids[1] = part.global_segment(s);
+  }
+  if (from) std::copy(from->m.source, from->m.source + 4, mg.source);
+  mg.hops = hops;
+  mg.ga = gp.ga;
+  mg.gb = gp.gb;
+  mg.hist.assign(hist, hist + gp.hist_len);
+  return mg;
 }
 
 void Updater::finish() {
@@ -864,6 +906,8 @@ void Updater::finish() {
   m.contacts_ = std::move(contacts);
   m.tangents_ = std::move(tangents);
   m.current_coords_ = std::move(cur_);
+  m.migration_.outgoing = std::move(migrants_);  // [partition]
+  ++m.migration_.updates;
   m.want_tangent_ = want_tangent_;
   m.updated_ = true;
   m.has_results_ = true;
