@@ -51,28 +51,21 @@ int contact_host_build(contact_host *ch, MPI_Comm comm, const scene *sc, const p
     int beam = -1;
     st = b2b_model_add_beam(ch->model, nodes, pc->n_segments + 1, 0, sc->radius,
                             B2B_CURVE_HERMITE_NODAL, 0, &beam, msg, msg_len);
-#if B2B_HAVE_DIST
     if (!st)
       st = b2b_model_set_beam_global(ch->model, beam, pc->beam, pc->first_segment, pc->start_cut,
                                      pc->end_cut, msg, msg_len);
-    /* ghost ranges (padding is implied by the cuts) */
+    /* ghost ranges: the ghosts, and the padding at cuts (owned elsewhere too) */
     const unsigned char *s = pp->seg_state + scene_segment(sc, pc->beam, pc->first_segment);
     for (int j = 0; j < pc->n_segments && !st;) {
-      if (s[j] != SEG_GHOST) {
+      if (s[j] == SEG_OWN) {
         ++j;
         continue;
       }
       int e = j;
-      while (e < pc->n_segments && s[e] == SEG_GHOST) ++e;
+      while (e < pc->n_segments && s[e] != SEG_OWN) ++e;
       st = b2b_model_set_ghost_segments(ch->model, beam, j, e - j, msg, msg_len);
       j = e;
     }
-#else
-    if (!st && (pc->start_cut || pc->end_cut || pc->first_segment != 0 || beam != pc->beam)) {
-      snprintf(msg, (size_t)msg_len, "this libb2b has no distributed API (B2B_1.4): one rank only");
-      st = B2B_ERR_STATE;
-    }
-#endif
   }
   free(local);
   free(nodes);
@@ -89,17 +82,9 @@ int contact_host_build(contact_host *ch, MPI_Comm comm, const scene *sc, const p
 
 int contact_host_global_pair(const contact_host *ch, int k, int64_t pair[4], char *msg,
                              int msg_len) {
-#if B2B_HAVE_DIST
   return b2b_model_get_contact_global(ch->model, k, pair, msg, msg_len);
-#else
-  int p[4];
-  const int st = b2b_model_get_contact(ch->model, k, NULL, p, NULL, NULL, NULL, 24, msg, msg_len);
-  for (int i = 0; i < 4; ++i) pair[i] = p[i];
-  return st;
-#endif
 }
 
-#if B2B_HAVE_DIST
 /* The owner of a pair: the rank of its smaller segment (global ids). */
 static int pair_owner(const contact_host *ch, const int64_t t[4]) {
   const int a_smaller = t[0] < t[2] || (t[0] == t[2] && t[1] <= t[3]);
@@ -170,6 +155,12 @@ static int migrate(contact_host *ch, int *changed_any, char *msg, int msg_len) {
       changed |= ch1;
       off += 8 + (int)((sz + 7) / 8 * 8);
     }
+    /* the end of the round: received contacts no rank sent again are dropped */
+    if (!st) {
+      int ch1 = 0;
+      st = b2b_model_migration_unpack(ch->model, NULL, 0, &ch1, msg, msg_len);
+      changed |= ch1;
+    }
     bad = st != 0;
     MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, ch->comm);
   }
@@ -188,7 +179,6 @@ static int migrate(contact_host *ch, int *changed_any, char *msg, int msg_len) {
   free(rbuf);
   return st;
 }
-#endif
 
 int contact_host_update(contact_host *ch, const double *x, int want_tangent, char *msg,
                         int msg_len) {
@@ -200,7 +190,6 @@ int contact_host_update(contact_host *ch, const double *x, int want_tangent, cha
       if (!st) snprintf(msg, (size_t)msg_len, "update failed on another rank");
       return st ? st : B2B_ERR_STATE;
     }
-#if B2B_HAVE_DIST
     int changed = 0;
     if ((st = migrate(ch, &changed, msg, msg_len))) return st;
     if (!changed) return 0;
@@ -210,9 +199,5 @@ int contact_host_update(contact_host *ch, const double *x, int want_tangent, cha
       return B2B_ERR_STATE;
     }
     ch->extra_updates++;
-#else
-    (void)round;
-    return 0;
-#endif
   }
 }

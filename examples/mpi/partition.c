@@ -236,16 +236,18 @@ int part_build(const scene *sc, const partition *pt, int p, const unsigned char 
       int j = i;
       while (j < nseg && s[j] != SEG_ABSENT) ++j;
       piece pc = {b, i, j - i, 0, 0};
+      /* the segment before the run lends its node to the run's first patch:
+       * padding at a cut, or (the beam's first segment) a ghost, no cut */
       if (i > 0) {
-        s[i - 1] = SEG_PADDING;
+        s[i - 1] = i - 1 == 0 ? SEG_GHOST : SEG_PADDING;
         pc.first_segment = i - 1;
         pc.n_segments++;
-        pc.start_cut = 1;
+        pc.start_cut = i - 1 > 0;
       }
       if (j < nseg) {
-        s[j] = SEG_PADDING;
+        s[j] = j == nseg - 1 ? SEG_GHOST : SEG_PADDING;
         pc.n_segments++;
-        pc.end_cut = 1;
+        pc.end_cut = j < nseg - 1;
       }
       out->pieces[out->n_pieces++] = pc;
       i = j + 1;
