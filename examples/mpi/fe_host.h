@@ -35,6 +35,9 @@ typedef struct {
   int64_t residuals, jacobians, newton_its;
   int64_t res_offproc, jac_offproc, jac_entries; /* off-process entries sent in assembly */
   double time_update, time_assembly, time_solve;
+  int64_t preallocations;
+  PetscInt *coo_i, *coo_j; /* the last COO pattern */
+  PetscCount coo_n;
 } fe_host;
 
 /* Builds everything for part pp: maps, the ghost exchange, b2b's model. Collective. */

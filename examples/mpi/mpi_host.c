@@ -113,6 +113,15 @@ int main(int argc, char **argv) {
     PetscFinalize();
     return 1;
   }
+  /* overrides of the scene's constants */
+  PetscReal value;
+  PetscBool set;
+  PetscCall(PetscOptionsGetReal(NULL, NULL, "-mu", &value, &set));
+  if (set) sc.mu = value;
+  PetscCall(PetscOptionsGetReal(NULL, NULL, "-strain", &value, &set));
+  if (set) sc.strain = value;
+  PetscCall(PetscOptionsGetInt(NULL, NULL, "-steps", &layers, &set));
+  if (set) sc.n_steps = (int)layers;
   if (scaling) {
     const int parts[] = {2, 4, 8, 16, 32, 64, 128, 256, 512, 1024};
     if (rank == 0) bad = scaling_study(&sc, parts, (int)(sizeof parts / sizeof parts[0]));
@@ -147,6 +156,9 @@ int main(int argc, char **argv) {
     return 1;
   }
   h.verbose = verbose;
+  PetscInt vlevel = 0;
+  PetscCall(PetscOptionsGetInt(NULL, NULL, "-verbose_level", &vlevel, &set));
+  if (set) h.verbose = (int)vlevel;
   Vec U;
   PetscCall(VecCreateMPI(comm, 3 * pp.n_own_nodes, 3 * sc.n_nodes, &U));
   report_data rd;

@@ -28,6 +28,7 @@ typedef struct {
   double t_end;
   int n_steps;       /* nominal load steps */
   double force_scale; /* for the convergence test */
+  int direct_solver;  /* 1: MUMPS LU; 0: GMRES + block Jacobi ILU(0) (fe_host.c) */
   /* scene data */
   double press, slide;            /* slide: total press force, slide distance */
   int slider;                     /* slide: the slider's global beam */
