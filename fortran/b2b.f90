@@ -109,6 +109,9 @@ module b2b
   public :: b2b_model_add_tangent_dense_scaled, b2b_model_add_tangent_banded_scaled
   public :: b2b_model_tangent_profile, b2b_model_add_tangent_profile
   public :: b2b_model_add_constrained_product
+  public :: b2b_model_set_beam_global, b2b_model_set_ghost_segments
+  public :: b2b_model_get_contact_global, b2b_model_migration_count
+  public :: b2b_model_migration_info, b2b_model_migration_pack, b2b_model_migration_unpack
 
   !> Contact parameters (b2b_params in C): an opaque handle, null until
   !> b2b_params_create. Set options by key, finalize, then pass it to
@@ -651,6 +654,84 @@ module b2b
       type(b2b_model), intent(in) :: model
       integer, intent(inout), optional :: counts(:)
       real(c_double), intent(inout), optional :: totals(:)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> Distributed models (b2b_model.h, "Distributed models"; doc/distributed.md),
+    !> in Fortran numbering: beams, segments and global ids are 1-based.
+    !> Local beam `beam` is a piece of global beam global_beam (>= 1, the same on
+    !> every rank); its first segment is segment first_segment (>= 1) of the
+    !> global beam; start_cut / end_cut: its first / last node is a cut (the
+    !> segment there is padding and must be a ghost). Before finalize.
+    module subroutine b2b_model_set_beam_global(model, beam, global_beam, first_segment, &
+                                                start_cut, end_cut, ierr, errmsg)
+      type(b2b_model), intent(inout) :: model
+      integer, intent(in) :: beam
+      integer(c_int64_t), intent(in) :: global_beam
+      integer, intent(in) :: first_segment
+      logical, intent(in) :: start_cut, end_cut
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> Segments first .. first + count - 1 (1-based) of beam are ghosts (owned
+    !> by another rank). Before finalize.
+    module subroutine b2b_model_set_ghost_segments(model, beam, first, count, ierr, errmsg)
+      type(b2b_model), intent(inout) :: model
+      integer, intent(in) :: beam, first, count
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> Contact k (1 .. count) in global ids: pair(4) = global beam and segment
+    !> of its A, then of its B (1-based).
+    module subroutine b2b_model_get_contact_global(model, k, pair, ierr, errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: k
+      integer(c_int64_t), intent(inout) :: pair(:)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> The number of migrating contacts of the last update.
+    module subroutine b2b_model_migration_count(model, n, ierr, errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(inout) :: n
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> Migrating contact k (1 .. n): target(4), global beam and segment of the
+    !> target pair's A, then of its B (1-based; its owner owns the smaller),
+    !> and nbytes, the size of its packed form; both optional.
+    module subroutine b2b_model_migration_info(model, k, target, nbytes, ierr, errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: k
+      integer(c_int64_t), intent(inout), optional :: target(:)
+      integer(c_int64_t), intent(inout), optional :: nbytes
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> Packs migrating contact k into buffer (at least nbytes of migration_info).
+    module subroutine b2b_model_migration_pack(model, k, buffer, ierr, errmsg)
+      type(b2b_model), intent(in) :: model
+      integer, intent(in) :: k
+      integer(c_int8_t), intent(inout), contiguous :: buffer(:)
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
+    !> Unpacks a contact packed by another rank (buffer: exactly its bytes);
+    !> changed: whether the model's set of received contacts changed. Without
+    !> buffer: the end of a round of receiving (drops the received contacts not
+    !> unpacked since the last update). Call it as
+    !> b2b_model_migration_unpack(model, changed=ch) for the end of a round.
+    module subroutine b2b_model_migration_unpack(model, buffer, changed, ierr, errmsg)
+      type(b2b_model), intent(inout) :: model
+      integer(c_int8_t), intent(in), contiguous, target, optional :: buffer(:)
+      logical, intent(inout) :: changed
       integer, intent(out), optional :: ierr
       character(len=*), intent(out), optional :: errmsg
     end subroutine

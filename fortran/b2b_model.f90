@@ -222,6 +222,82 @@ submodule (b2b) model_layer
       integer(c_int) :: st
     end function
 
+    function c_b2b_model_set_beam_global(model, beam, global_beam, first_segment, start_cut, &
+                                         end_cut, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_beam_global') result(st)
+      import :: c_int, c_ptr, c_char, c_int64_t
+      type(c_ptr), value :: model
+      integer(c_int), value :: beam, first_segment, start_cut, end_cut
+      integer(c_int64_t), value :: global_beam
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_set_ghost_segments(model, beam, first, count, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_ghost_segments') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      integer(c_int), value :: beam, first, count
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_get_contact_global(model, k, pair, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_get_contact_global') result(st)
+      import :: c_int, c_ptr, c_char, c_int64_t
+      type(c_ptr), value :: model
+      integer(c_int), value :: k
+      integer(c_int64_t), intent(inout) :: pair(*)
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_migration_count(model, n, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_migration_count') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: n
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_migration_info(model, k, target, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_migration_info') result(st)
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value :: model, target, size
+      integer(c_int), value :: k
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_migration_pack(model, k, buffer, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_migration_pack') result(st)
+      import :: c_int, c_ptr, c_char, c_int64_t, c_int8_t
+      type(c_ptr), value :: model
+      integer(c_int), value :: k
+      integer(c_int8_t), intent(inout) :: buffer(*)
+      integer(c_int64_t), value :: size
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_b2b_model_migration_unpack(model, buffer, size, changed, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_migration_unpack') result(st)
+      import :: c_int, c_ptr, c_char, c_int64_t
+      type(c_ptr), value :: model, buffer
+      integer(c_int64_t), value :: size
+      integer(c_int), intent(inout) :: changed
+      character(kind=c_char), intent(inout) :: errmsg(*)
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
     function c_b2b_model_stats(model, counts, totals, errmsg, errmsg_len) &
         bind(C, name='b2b_model_stats') result(st)
       import :: c_int, c_ptr, c_char, c_double
@@ -723,6 +799,131 @@ contains
       st = c_b2b_model_restore(model%ptr, dummy, 0_c_int64_t, buf, int(size(buf), c_int))
     end if
     call finish('b2b_model_restore', st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_set_beam_global
+    character(len=*), parameter :: me = 'b2b_model_set_beam_global'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    logical :: ok
+    call check_ints(me, [character(len=13) :: 'beam', 'first_segment'], [beam, first_segment], ok, &
+                    ierr, errmsg)
+    if (.not. ok) return
+    buf = c_null_char
+    st = c_b2b_model_set_beam_global(model%ptr, int(beam - 1, c_int), global_beam - 1_c_int64_t, &
+                                     int(first_segment - 1, c_int), c_flag(start_cut), &
+                                     c_flag(end_cut), buf, int(size(buf), c_int))
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_set_ghost_segments
+    character(len=*), parameter :: me = 'b2b_model_set_ghost_segments'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    logical :: ok
+    call check_ints(me, [character(len=5) :: 'beam', 'first', 'count'], [beam, first, count], ok, &
+                    ierr, errmsg)
+    if (.not. ok) return
+    buf = c_null_char
+    st = c_b2b_model_set_ghost_segments(model%ptr, int(beam - 1, c_int), int(first - 1, c_int), &
+                                        int(count, c_int), buf, int(size(buf), c_int))
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_get_contact_global
+    character(len=*), parameter :: me = 'b2b_model_get_contact_global'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int64_t) :: cpair(4)
+    logical :: ok
+    call check_ints(me, [character(len=1) :: 'k'], [k], ok, ierr, errmsg)
+    if (.not. ok) return
+    if (.not. shape_is(shape(pair), [4])) then
+      call finish_size(me, 'pair', shape(pair), [4], ierr, errmsg)
+      return
+    end if
+    buf = c_null_char
+    st = c_b2b_model_get_contact_global(model%ptr, int(k - 1, c_int), cpair, buf, &
+                                        int(size(buf), c_int))
+    if (st == B2B_OK) pair = cpair + 1_c_int64_t
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_migration_count
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, cn
+    buf = c_null_char
+    cn = 0
+    st = c_b2b_model_migration_count(model%ptr, cn, buf, int(size(buf), c_int))
+    if (st == B2B_OK) n = int(cn)
+    call finish('b2b_model_migration_count', st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_migration_info
+    character(len=*), parameter :: me = 'b2b_model_migration_info'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int64_t), target :: ctarget(4), csize
+    type(c_ptr) :: pt, ps
+    logical :: ok
+    call check_ints(me, [character(len=1) :: 'k'], [k], ok, ierr, errmsg)
+    if (.not. ok) return
+    pt = c_null_ptr
+    ps = c_null_ptr
+    if (present(target)) then
+      if (.not. shape_is(shape(target), [4])) then
+        call finish_size(me, 'target', shape(target), [4], ierr, errmsg)
+        return
+      end if
+      pt = c_loc(ctarget)
+    end if
+    if (present(nbytes)) ps = c_loc(csize)
+    buf = c_null_char
+    st = c_b2b_model_migration_info(model%ptr, int(k - 1, c_int), pt, ps, buf, &
+                                    int(size(buf), c_int))
+    if (st == B2B_OK .and. present(target)) target = ctarget + 1_c_int64_t
+    if (st == B2B_OK .and. present(nbytes)) nbytes = csize
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_migration_pack
+    character(len=*), parameter :: me = 'b2b_model_migration_pack'
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st
+    integer(c_int8_t) :: dummy(1)
+    logical :: ok
+    call check_ints(me, [character(len=1) :: 'k'], [k], ok, ierr, errmsg)
+    if (.not. ok) return
+    buf = c_null_char
+    if (size(buffer) > 0) then
+      st = c_b2b_model_migration_pack(model%ptr, int(k - 1, c_int), buffer, &
+                                      int(size(buffer), c_int64_t), buf, int(size(buf), c_int))
+    else
+      st = c_b2b_model_migration_pack(model%ptr, int(k - 1, c_int), dummy, 0_c_int64_t, buf, &
+                                      int(size(buf), c_int))
+    end if
+    call finish(me, st, buf, ierr, errmsg)
+  end procedure
+
+  module procedure b2b_model_migration_unpack
+    character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
+    integer(c_int) :: st, ch
+    integer(c_int8_t), target :: dummy(1)
+    buf = c_null_char
+    ch = 0
+    if (.not. present(buffer)) then
+      st = c_b2b_model_migration_unpack(model%ptr, c_null_ptr, 0_c_int64_t, ch, buf, &
+                                        int(size(buf), c_int))
+    else if (size(buffer) > 0) then
+      st = c_b2b_model_migration_unpack(model%ptr, c_loc(buffer), int(size(buffer), c_int64_t), &
+                                        ch, buf, int(size(buf), c_int))
+    else
+      dummy = 0
+      st = c_b2b_model_migration_unpack(model%ptr, c_loc(dummy), 0_c_int64_t, ch, buf, &
+                                        int(size(buf), c_int))
+    end if
+    if (st == B2B_OK) changed = ch /= 0
+    call finish('b2b_model_migration_unpack', st, buf, ierr, errmsg)
   end procedure
 
   module procedure b2b_model_stats

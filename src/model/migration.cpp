@@ -91,6 +91,25 @@ bool Migration::end_round() {
   return received.size() != before;
 }
 
+Migrant make_migrant(const BeamTable& table, const Partition& part, int sa, int sb,
+                     const Migration::Received* from, int a, int b, int hops, int ga, int gb,
+                     const double* hist, int hist_len) {
+  Migrant mg;
+  const int ends[4] = {sa, sb, a, b};
+  for (int k = 0; k < 4; ++k) {
+    const SegmentInfo& s = table.segment(ends[k]);
+    int64_t* ids = k < 2 ? mg.source + 2 * k : mg.target + 2 * (k - 2);
+    ids[0] = part.global_beam(s);
+    ids[1] = part.global_segment(s);
+  }
+  if (from) std::copy(from->m.source, from->m.source + 4, mg.source);
+  mg.hops = hops;
+  mg.ga = ga;
+  mg.gb = gb;
+  mg.hist.assign(hist, hist + hist_len);
+  return mg;
+}
+
 const Migration::Received* CommittedView::received(const Migration& mig, uint64_t key) const {
   auto it = std::lower_bound(received_at.begin(), received_at.end(),
                              std::pair<uint64_t, int>(key, -1));

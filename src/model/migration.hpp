@@ -28,7 +28,9 @@
 #include <utility>
 #include <vector>
 
+#include "beam_table.hpp"
 #include "contact_state.hpp"
+#include "partition.hpp"
 
 namespace b2b {
 namespace model {
@@ -72,6 +74,13 @@ class Migration {
   // last update; true if there were any.
   bool end_round();
 };
+
+// The committed contact on pair (sa, sb) (or the contact received as from,
+// whose source it keeps) leaving for the pair (a, b) with hist (hist_len
+// doubles) after hops hops; ga, gb the host groups of its parameter set.
+Migrant make_migrant(const BeamTable& table, const Partition& part, int sa, int sb,
+                     const Migration::Received* from, int a, int b, int hops, int ga, int gb,
+                     const double* hist, int hist_len);
 
 // The committed state an update reads (update.cpp: near_pairs and
 // handovers): the model's own, or, with received contacts, a copy with each

@@ -149,9 +149,6 @@ class Updater {
   Problem crossed_line_pair(Item& it);
   Problem evaluate_with(Item& it, std::vector<double> hist);
   Problem handovers();
-  // [partition] the contact of sp (received as from, or null) leaving for (a, b)
-  Migrant migrant(const StoredPair& sp, const Migration::Received* from, int a, int b, int hops,
-                  const GroupPair& gp, const double* hist) const;
   Problem overflow(const Item& item) const;
   Problem totals_overflow() const;
   void finish();
@@ -737,7 +734,8 @@ Problem Updater::handovers() {
       // padding here is (the ghost layer is too thin)
       if (!m_.partition_.evaluates(a, b)) {
         if (m_.partition_.owned_elsewhere(a, b)) {
-          migrants_.push_back(migrant(sp, from, a, b, hops_before + hops, gp, hist));
+          migrants_.push_back(make_migrant(m_.table_, m_.partition_, sp.a, sp.b, from, a, b,
+                                           hops_before + hops, gp.ga, gp.gb, hist, gp.hist_len));
           found = true;
         }
         break;
@@ -789,25 +787,6 @@ Problem Updater::handovers() {
                        items_.end(), by_key);
   }
   return Problem();
-}
-
-Migrant Updater::migrant(const StoredPair& sp, const Migration::Received* from, int a, int b,
-                         int hops, const GroupPair& gp, const double* hist) const {
-  const Partition& part = m_.partition_;
-  Migrant mg;
-  const int ends[4] = {sp.a, sp.b, a, b};
-  for (int k = 0; k < 4; ++k) {
-    const SegmentInfo& s = m_.table_.segment(ends[k]);
-    int64_t* ids = k < 2 ? mg.source + 2 * k : mg.target + 2 * (k - 2);
-    ids[0] = part.global_beam(s);
-    ids[1] = part.global_segment(s);
-  }
-  if (from) std::copy(from->m.source, from->m.source + 4, mg.source);
-  mg.hops = hops;
-  mg.ga = gp.ga;
-  mg.gb = gp.gb;
-  mg.hist.assign(hist, hist + gp.hist_len);
-  return mg;
 }
 
 void Updater::finish() {

@@ -23,6 +23,9 @@ module ftest_capi
   public :: c_model_add_tangent_dense, c_model_add_tangent_banded, c_model_tangent_coo
   public :: c_model_commit, c_model_revert, c_model_save_size, c_model_save, c_model_restore
   public :: c_model_stats
+  public :: c_model_set_beam_global, c_model_set_ghost_segments, c_model_get_contact_global
+  public :: c_model_migration_count, c_model_migration_info, c_model_migration_pack
+  public :: c_model_migration_unpack
 
   interface
     function c_segment_eval(kind, start_rule, end_rule, patch, end_tangents, xi, x, dx, d2x, &
@@ -341,6 +344,69 @@ module ftest_capi
         bind(C, name='b2b_model_stats') result(st)
       import :: c_int, c_ptr
       type(c_ptr), value :: model, counts, totals, errmsg
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    ! Distributed models (ABI 1.4)
+    function c_model_set_beam_global(model, beam, global_beam, first_segment, start_cut, &
+                                     end_cut, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_beam_global') result(st)
+      import :: c_int, c_ptr, c_int64_t
+      type(c_ptr), value :: model, errmsg
+      integer(c_int), value :: beam, first_segment, start_cut, end_cut, errmsg_len
+      integer(c_int64_t), value :: global_beam
+      integer(c_int) :: st
+    end function
+
+    function c_model_set_ghost_segments(model, beam, first, count, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_set_ghost_segments') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, errmsg
+      integer(c_int), value :: beam, first, count, errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_get_contact_global(model, k, pair, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_get_contact_global') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, pair, errmsg
+      integer(c_int), value :: k, errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_migration_count(model, n, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_migration_count') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, errmsg
+      integer(c_int), intent(inout) :: n
+      integer(c_int), value :: errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_migration_info(model, k, target, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_migration_info') result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: model, target, size, errmsg
+      integer(c_int), value :: k, errmsg_len
+      integer(c_int) :: st
+    end function
+
+    function c_model_migration_pack(model, k, buffer, size, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_migration_pack') result(st)
+      import :: c_int, c_ptr, c_int64_t
+      type(c_ptr), value :: model, buffer, errmsg
+      integer(c_int), value :: k, errmsg_len
+      integer(c_int64_t), value :: size
+      integer(c_int) :: st
+    end function
+
+    function c_model_migration_unpack(model, buffer, size, changed, errmsg, errmsg_len) &
+        bind(C, name='b2b_model_migration_unpack') result(st)
+      import :: c_int, c_ptr, c_int64_t
+      type(c_ptr), value :: model, buffer, errmsg
+      integer(c_int64_t), value :: size
+      integer(c_int), intent(inout) :: changed
       integer(c_int), value :: errmsg_len
       integer(c_int) :: st
     end function
