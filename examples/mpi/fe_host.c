@@ -1,0 +1,444 @@
+/* The host's SNES callbacks and load steps (fe_host.h). */
+#include "fe_host.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "beam_element.h"
+
+int fe_host_setup(fe_host *h, MPI_Comm comm, const scene *sc, const partition *pt, const part *pp) {
+  memset(h, 0, sizeof *h);
+  h->comm = comm;
+  MPI_Comm_rank(comm, &h->rank);
+  MPI_Comm_size(comm, &h->size);
+  h->sc = sc;
+  h->pt = pt;
+  h->pp = pp;
+  h->max_it = 25;
+  const int N = sc->n_nodes, nl = pp->n_local_nodes;
+  h->local_of = malloc(sizeof(int) * (size_t)N);
+  h->own_index = malloc(sizeof(int) * (size_t)N);
+  h->node_beam = malloc(sizeof(int) * (size_t)N);
+  h->node_offset = calloc((size_t)h->size + 1, sizeof(int));
+  int *count = calloc((size_t)h->size, sizeof(int));
+  h->gdof = malloc(sizeof(PetscInt) * 3 * (size_t)nl);
+  h->eq_local = malloc(sizeof(int) * 3 * (size_t)nl);
+  h->eq_global = malloc(sizeof(int) * 3 * (size_t)nl);
+  h->u = calloc(3 * (size_t)nl, sizeof(double));
+  h->x = calloc(3 * (size_t)nl, sizeof(double));
+  h->f = calloc(3 * (size_t)nl, sizeof(double));
+  h->u_at = calloc(3 * (size_t)pp->n_own_nodes + 1, sizeof(double));
+  if (!h->local_of || !h->own_index || !h->node_beam || !h->node_offset || !count || !h->gdof ||
+      !h->eq_local || !h->eq_global || !h->u || !h->x || !h->f || !h->u_at) {
+    free(count);
+    return 1;
+  }
+  for (int b = 0; b < sc->n_beams; ++b)
+    for (int k = sc->first_node[b]; k < sc->first_node[b + 1]; ++k) h->node_beam[k] = b;
+  for (int k = 0; k < N; ++k) {
+    h->local_of[k] = -1;
+    h->own_index[k] = count[pt->node_owner[k]]++;
+  }
+  for (int q = 0; q < h->size; ++q) h->node_offset[q + 1] = h->node_offset[q] + count[q];
+  free(count);
+  for (int l = 0; l < nl; ++l) {
+    const int k = pp->local_nodes[l];
+    h->local_of[k] = l;
+    const int e = 3 * (h->node_offset[pt->node_owner[k]] + h->own_index[k]);
+    for (int d = 0; d < 3; ++d) {
+      h->gdof[3 * l + d] = e + d;
+      h->eq_global[3 * l + d] = e + d;
+      h->eq_local[3 * l + d] = 3 * l + d;
+    }
+  }
+  if (ghost_exchange_setup(&h->gx, comm, pp, pt, h->own_index)) return 1;
+  if (contact_host_build(&h->ch, comm, sc, pt, pp, h->msg, sizeof h->msg)) {
+    fprintf(stderr, "rank %d: %s\n", h->rank, h->msg);
+    return 1;
+  }
+  return 0;
+}
+
+void fe_host_free(fe_host *h) {
+  contact_host_free(&h->ch);
+  ghost_exchange_free(&h->gx);
+  free(h->local_of);
+  free(h->own_index);
+  free(h->node_beam);
+  free(h->node_offset);
+  free(h->gdof);
+  free(h->eq_local);
+  free(h->eq_global);
+  free(h->u);
+  free(h->x);
+  free(h->f);
+  free(h->u_at);
+}
+
+/* u and x of every local node from the own dofs of U and the ghost exchange. */
+static int local_state(fe_host *h, Vec U) {
+  const PetscScalar *a;
+  const int no = h->pp->n_own_nodes, nl = h->pp->n_local_nodes;
+  VecGetArrayRead(U, &a);
+  for (int i = 0; i < 3 * no; ++i) h->u[i] = a[i];
+  VecRestoreArrayRead(U, &a);
+  if (ghost_exchange_run(&h->gx, h->u)) return 1;
+  for (int l = 0; l < nl; ++l)
+    for (int d = 0; d < 3; ++d) h->x[3 * l + d] = h->sc->X[3 * h->pp->local_nodes[l] + d] + h->u[3 * l + d];
+  return 0;
+}
+
+/* Calls emit(local nodes, n, g, H) for each of this rank's own elements at
+ * the current x: axial springs of own segments, bending at own interior
+ * nodes (less its reference forces with balance_reference), anchors of own
+ * nodes (their Hessian diagonal in H, the rest zero). */
+typedef void (*emit_fn)(fe_host *h, const int *nodes, int n, const double *g, const double *H,
+                        void *data);
+
+static void host_elements(fe_host *h, emit_fn emit, void *data, int want_H) {
+  const scene *sc = h->sc;
+  const part *pp = h->pp;
+  double g[9], g0[9], H[81];
+  for (int i = 0; i < pp->n_pieces; ++i) {
+    const piece *pc = pp->pieces + i;
+    for (int s = pc->first_segment; s < pc->first_segment + pc->n_segments; ++s) {
+      if (pp->seg_state[scene_segment(sc, pc->beam, s)] != SEG_OWN) continue;
+      const int ka = sc->first_node[pc->beam] + s;
+      const int nodes[2] = {h->local_of[ka], h->local_of[ka + 1]};
+      const double *Xa = sc->X + 3 * ka;
+      double L0 = 0.0;
+      for (int d = 0; d < 3; ++d) L0 += (Xa[3 + d] - Xa[d]) * (Xa[3 + d] - Xa[d]);
+      axial_element(h->x + 3 * nodes[0], h->x + 3 * nodes[1], sqrt(L0), sc->EA, g,
+                    want_H ? H : NULL);
+      emit(h, nodes, 2, g, want_H ? H : NULL, data);
+    }
+  }
+  for (int l = 0; l < pp->n_own_nodes; ++l) {
+    const int k = pp->local_nodes[l], b = h->node_beam[k];
+    double a[3], fx[3];
+    scene_load(sc, k, h->t, a, fx);
+    double ga[3], Ha[9] = {0};
+    for (int d = 0; d < 3; ++d) {
+      ga[d] = sc->anchor_k[3 * k + d] * (h->x[3 * l + d] - a[d]) - fx[d];
+      Ha[4 * d] = sc->anchor_k[3 * k + d];
+    }
+    emit(h, &l, 1, ga, want_H ? Ha : NULL, data);
+    if (k == sc->first_node[b] || k == sc->first_node[b + 1] - 1) continue;
+    const int nodes[3] = {h->local_of[k - 1], l, h->local_of[k + 1]};
+    bending_element(h->x + 3 * nodes[0], h->x + 3 * nodes[1], h->x + 3 * nodes[2], sc->kb, g,
+                    want_H ? H : NULL);
+    if (sc->balance_reference) {
+      bending_element(sc->X + 3 * (k - 1), sc->X + 3 * k, sc->X + 3 * (k + 1), sc->kb, g0, NULL);
+      for (int i = 0; i < 9; ++i) g[i] -= g0[i];
+    }
+    emit(h, nodes, 3, g, want_H ? H : NULL, data);
+  }
+}
+
+static void emit_residual(fe_host *h, const int *nodes, int n, const double *g, const double *H,
+                          void *data) {
+  (void)H;
+  (void)data;
+  for (int a = 0; a < n; ++a)
+    for (int d = 0; d < 3; ++d) h->f[3 * nodes[a] + d] += g[3 * a + d];
+}
+
+static PetscErrorCode form_residual(SNES snes, Vec U, Vec F, void *ctx) {
+  fe_host *h = ctx;
+  const int nl = h->pp->n_local_nodes;
+  double t0 = MPI_Wtime();
+  if (local_state(h, U)) SETERRQ(h->comm, PETSC_ERR_LIB, "ghost exchange failed");
+  const int st = contact_host_update(&h->ch, h->x, 1, h->msg, sizeof h->msg);
+  double t1 = MPI_Wtime();
+  h->time_update += t1 - t0;
+  h->residuals++;
+  PetscCall(VecSet(F, 0.0));
+  if (st) {
+    /* every rank knows (contact_host_update agrees on failure): a cut-back */
+    if (h->verbose) PetscCall(PetscPrintf(h->comm, "  update failed: %s\n", h->msg));
+    h->domain_error = 1;
+    h->have_update = 0;
+    PetscCall(SNESSetFunctionDomainError(snes));
+    return 0;
+  }
+  h->have_update = 1;
+  for (int i = 0; i < 3 * h->pp->n_own_nodes; ++i) h->u_at[i] = h->u[i];
+  memset(h->f, 0, sizeof(double) * 3 * (size_t)nl);
+  host_elements(h, emit_residual, NULL, 0);
+  if (b2b_model_add_residual(h->ch.model, h->eq_local, 3, 0, 3 * nl, h->f, h->msg, sizeof h->msg))
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "b2b_model_add_residual: %s", h->msg);
+  /* own entries, and the nonzero ones of ghost nodes (their owners' rows) */
+  const int no = h->pp->n_own_nodes;
+  PetscCall(VecSetValues(F, 3 * no, h->gdof, h->f, ADD_VALUES));
+  for (int i = 3 * no; i < 3 * nl; ++i)
+    if (h->f[i] != 0.0) {
+      PetscCall(VecSetValues(F, 1, h->gdof + i, h->f + i, ADD_VALUES));
+      h->res_offproc++;
+    }
+  PetscCall(VecAssemblyBegin(F));
+  PetscCall(VecAssemblyEnd(F));
+  h->time_assembly += MPI_Wtime() - t1;
+  return 0;
+}
+
+typedef struct {
+  PetscInt *i, *j;
+  PetscScalar *v;
+  PetscCount n;
+} coo;
+
+static void emit_jacobian(fe_host *h, const int *nodes, int n, const double *g, const double *H,
+                          void *data) {
+  (void)g;
+  coo *c = data;
+  const int m = 3 * n;
+  for (int a = 0; a < m; ++a)
+    for (int b = 0; b < m; ++b) {
+      if (n == 1 && a != b) continue; /* anchors: the diagonal */
+      c->i[c->n] = h->gdof[3 * nodes[a / 3] + a % 3];
+      c->j[c->n] = h->gdof[3 * nodes[b / 3] + b % 3];
+      c->v[c->n] = H[m * a + b];
+      c->n++;
+    }
+}
+
+static PetscErrorCode form_jacobian(SNES snes, Vec U, Mat J, Mat Pmat, void *ctx) {
+  fe_host *h = ctx;
+  (void)J;
+  /* the Jacobian is wanted at the last residual's point (basic line search);
+   * if not, update there first (collectively) */
+  const PetscScalar *a;
+  int same = h->have_update;
+  PetscCall(VecGetArrayRead(U, &a));
+  for (int i = 0; i < 3 * h->pp->n_own_nodes && same; ++i) same = a[i] == h->u_at[i];
+  PetscCall(VecRestoreArrayRead(U, &a));
+  int all_same = 0;
+  MPI_Allreduce(&same, &all_same, 1, MPI_INT, MPI_MIN, h->comm);
+  if (!all_same) {
+    Vec F;
+    PetscCall(VecDuplicate(U, &F));
+    PetscCall(form_residual(snes, U, F, h));
+    PetscCall(VecDestroy(&F));
+    if (!h->have_update) SETERRQ(h->comm, PETSC_ERR_LIB, "update failed at the Jacobian's point");
+  }
+  const double t0 = MPI_Wtime();
+  const part *pp = h->pp;
+  const int nl = pp->n_local_nodes, N3 = 3 * h->sc->n_nodes;
+  int nnz_b2b = 0;
+  if (b2b_model_tangent_coo(h->ch.model, h->eq_global, 3, 0, N3, &nnz_b2b, NULL, NULL, NULL, 0,
+                            h->msg, sizeof h->msg))
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "b2b_model_tangent_coo: %s", h->msg);
+  if (h->verbose > 1) {
+    int nc = 0;
+    b2b_model_contact_count(h->ch.model, &nc, h->msg, sizeof h->msg);
+    fprintf(stderr, "rank %d: %d contacts, %d COO entries from b2b\n", h->rank, nc, nnz_b2b);
+  }
+  const PetscCount n_host = (PetscCount)36 * pp->n_own_segments + 84 * (PetscCount)pp->n_own_nodes;
+  coo c = {NULL, NULL, NULL, 0};
+  PetscCall(PetscMalloc3(n_host + nnz_b2b, &c.i, n_host + nnz_b2b, &c.j, n_host + nnz_b2b, &c.v));
+  host_elements(h, emit_jacobian, &c, 1);
+  int *ri = malloc(sizeof(int) * (size_t)(nnz_b2b + 1)), *ci = malloc(sizeof(int) * (size_t)(nnz_b2b + 1));
+  if (!ri || !ci) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory");
+  int got = 0;
+  if (b2b_model_tangent_coo(h->ch.model, h->eq_global, 3, 0, N3, &got, ri, ci, c.v + c.n,
+                            nnz_b2b, h->msg, sizeof h->msg))
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "b2b_model_tangent_coo: %s", h->msg);
+  for (int e = 0; e < got; ++e) {
+    c.i[c.n + e] = ri[e];
+    c.j[c.n + e] = ci[e];
+  }
+  c.n += got;
+  free(ri);
+  free(ci);
+  (void)nl;
+  const PetscInt r0 = 3 * h->node_offset[h->rank], r1 = 3 * h->node_offset[h->rank + 1];
+  for (PetscCount e = 0; e < c.n; ++e) h->jac_offproc += c.i[e] < r0 || c.i[e] >= r1;
+  h->jac_entries += c.n;
+  /* the pattern changes as contacts close, open and slide: a new
+   * preallocation every time (MUMPS then redoes its analysis) */
+  /* The pattern changes as contacts close, open and slide: a new
+   * preallocation when it did (on any rank), else only the values. */
+  int same_pattern = h->coo_n == c.n && h->coo_i &&
+                     memcmp(h->coo_i, c.i, sizeof(PetscInt) * (size_t)c.n) == 0 &&
+                     memcmp(h->coo_j, c.j, sizeof(PetscInt) * (size_t)c.n) == 0;
+  int all_same_pattern = 0;
+  MPI_Allreduce(&same_pattern, &all_same_pattern, 1, MPI_INT, MPI_MIN, h->comm);
+  if (!all_same_pattern) {
+    PetscCall(PetscFree2(h->coo_i, h->coo_j));
+    PetscCall(PetscMalloc2(c.n, &h->coo_i, c.n, &h->coo_j));
+    PetscCall(PetscArraycpy(h->coo_i, c.i, c.n));
+    PetscCall(PetscArraycpy(h->coo_j, c.j, c.n));
+    h->coo_n = c.n;
+    PetscCall(MatSetPreallocationCOO(Pmat, c.n, c.i, c.j));
+    /* PETSc 3.18 does not see a new COO preallocation as a new nonzero
+     * pattern: the factorization would reuse the old symbolic one (MUMPS
+     * then writes past its arrays). A reset makes the next solve set up
+     * afresh. */
+    KSP ksp;
+    PC pc;
+    PetscCall(SNESGetKSP(snes, &ksp));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCReset(pc));
+    h->preallocations++;
+  }
+  PetscCall(MatSetValuesCOO(Pmat, c.v, INSERT_VALUES));
+  PetscCall(PetscFree3(c.i, c.j, c.v));
+  h->jacobians++;
+  h->time_assembly += MPI_Wtime() - t0;
+  return 0;
+}
+
+static PetscErrorCode converged_test(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                                     PetscReal fnorm, SNESConvergedReason *reason, void *ctx) {
+  fe_host *h = ctx;
+  (void)snes;
+  if (h->verbose) PetscCall(PetscPrintf(h->comm, "    it %2d  |F| %.3e  |du| %.3e\n", (int)it, (double)fnorm, (double)snorm));
+  *reason = SNES_CONVERGED_ITERATING;
+  if (!(fnorm == fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
+  else if (it > 0 && fnorm <= h->ftol && snorm <= 1e-12 * (xnorm + h->sc->radius))
+    *reason = SNES_CONVERGED_SNORM_RELATIVE;
+  else if (it >= h->max_it) *reason = SNES_DIVERGED_MAX_IT;
+  return 0;
+}
+
+void fe_host_global_counts(fe_host *h, int counts[B2B_MODEL_COUNTS_LEN],
+                           double totals[B2B_MODEL_TOTALS_LEN]) {
+  int c[B2B_MODEL_COUNTS_LEN] = {0};
+  double t[B2B_MODEL_TOTALS_LEN] = {0};
+  b2b_model_stats(h->ch.model, c, t, h->msg, sizeof h->msg);
+  MPI_Allreduce(c, counts, B2B_MODEL_COUNTS_LEN, MPI_INT, MPI_SUM, h->comm);
+  MPI_Allreduce(t, totals, B2B_MODEL_TOTALS_LEN, MPI_DOUBLE, MPI_SUM, h->comm);
+  double mg = t[B2B_TOTAL_MIN_GAP];
+  MPI_Allreduce(&mg, &totals[B2B_TOTAL_MIN_GAP], 1, MPI_DOUBLE, MPI_MIN, h->comm);
+}
+
+int fe_host_solve(fe_host *h, Vec U, step_report report, void *data) {
+  const scene *sc = h->sc;
+  SNES snes;
+  KSP ksp;
+  PC pc;
+  SNESLineSearch ls;
+  Vec F, Uc;
+  Mat J;
+  const PetscInt n_own = 3 * h->pp->n_own_nodes, N = 3 * sc->n_nodes;
+  /* Converged: |F| below ftol and Newton's last correction at the level of
+   * rounding (|du| <= 1e-12 (|u| + r)): the state is then the solution to
+   * rounding, whatever path Newton took to it. So two runs whose paths part
+   * (rounding on either side of a stick/slip switch, or another order of
+   * sums) stop at states that agree far below the comparison's 1e-10, not
+   * at two points somewhere within a residual tolerance. */
+  h->ftol = 1e-9 * sc->force_scale;
+  VecDuplicate(U, &F);
+  VecDuplicate(U, &Uc);
+  MatCreate(h->comm, &J);
+  MatSetSizes(J, n_own, n_own, N, N);
+  MatSetType(J, MATAIJ);
+  SNESCreate(h->comm, &snes);
+  SNESSetType(snes, SNESNEWTONLS);
+  SNESGetLineSearch(snes, &ls);
+  SNESLineSearchSetType(ls, SNESLINESEARCHBASIC);
+  SNESSetFunction(snes, F, form_residual, h);
+  SNESSetJacobian(snes, J, J, form_jacobian, h);
+  SNESSetConvergenceTest(snes, converged_test, h, NULL);
+  SNESSetTolerances(snes, 0.0, 0.0, 0.0, h->max_it + 1, 1000000);
+  SNESGetKSP(snes, &ksp);
+  KSPGetPC(ksp, &pc);
+  if (sc->direct_solver) {
+    /* MUMPS LU: the same solution on any number of ranks to rounding */
+    KSPSetType(ksp, KSPPREONLY);
+    PCSetType(pc, PCLU);
+    PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+  } else {
+    /* the network's 3-D contact graph fills an LU badly (MUMPS on
+     * Debian's reference BLAS: seconds per factorization at 5000
+     * segments); GMRES with block Jacobi (ILU(0) per rank), solved far
+     * enough (1e-10) that Newton's convergence test decides alone */
+    KSPSetType(ksp, KSPGMRES);
+    KSPGMRESSetRestart(ksp, 200);
+    KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 2000);
+    PCSetType(pc, PCBJACOBI);
+  }
+  SNESSetFromOptions(snes);
+
+  /* the initial configuration, committed: the crossing check's reference */
+  VecSet(U, 0.0);
+  h->t = 0.0;
+  int fail = 0;
+  if (local_state(h, U) || contact_host_update(&h->ch, h->x, 0, h->msg, sizeof h->msg) ||
+      b2b_model_commit(h->ch.model, h->msg, sizeof h->msg)) {
+    PetscPrintf(h->comm, "initial update failed: %s\n", h->msg);
+    fail = 1;
+  }
+  const double nominal = sc->t_end / sc->n_steps, dt_min = nominal / 64;
+  double t = 0.0, dt = nominal;
+  int step = 0, good = 0;
+  VecCopy(U, Uc);
+  while (!fail && t < sc->t_end * (1 - 1e-12)) {
+    const double t_new = fmin(t + dt, sc->t_end);
+    h->t = t_new;
+    h->domain_error = 0;
+    h->ch.migrations_step = 0;
+    const double t0 = MPI_Wtime();
+    SNESSolve(snes, NULL, U);
+    const double t_step = MPI_Wtime() - t0;
+    SNESConvergedReason reason;
+    PetscInt its;
+    SNESGetConvergedReason(snes, &reason);
+    SNESGetIterationNumber(snes, &its);
+    h->newton_its += its;
+    int counts[B2B_MODEL_COUNTS_LEN] = {0};
+    double totals[B2B_MODEL_TOTALS_LEN] = {0};
+    int ok = reason > 0 && h->have_update;
+    if (ok) {
+      fe_host_global_counts(h, counts, totals);
+      ok = counts[B2B_COUNT_CROSSED] == 0 && counts[B2B_COUNT_LOST] == 0;
+    }
+    if (ok) {
+      ++step;
+      t = t_new;
+      VecCopy(U, Uc);
+      int64_t mig = h->ch.migrations_step, mig_all = 0;
+      MPI_Allreduce(&mig, &mig_all, 1, MPI_INT64_T, MPI_SUM, h->comm);
+      PetscPrintf(h->comm, "step %2d  t %.5f  Newton %2d  active %6d  slip %6d  handovers %4d  "
+                  "migrated %lld  f_N sum %.6e  min gap %.3e  %.2f s\n",
+                  step, t, (int)its, counts[B2B_COUNT_ACTIVE], counts[B2B_COUNT_SLIP],
+                  counts[B2B_COUNT_HANDOVERS], (long long)mig_all,
+                  totals[B2B_TOTAL_NORMAL_FORCE], totals[B2B_TOTAL_MIN_GAP], t_step);
+      /* the converged state is reported, then committed */
+      if (report && report(h, step, U, data)) fail = 1;
+      if (b2b_model_commit(h->ch.model, h->msg, sizeof h->msg)) {
+        fprintf(stderr, "rank %d: commit: %s\n", h->rank, h->msg);
+        fail = 1;
+      }
+      if (++good >= 2 && dt < nominal) {
+        dt = fmin(2 * dt, nominal); /* back towards the nominal step after two that went well */
+        good = 0;
+      }
+    } else {
+      PetscPrintf(h->comm, "step at t %.5f cut back (Newton %s after %d, crossed %d, lost %d)\n",
+                  t_new, SNESConvergedReasons[reason], (int)its, counts[B2B_COUNT_CROSSED],
+                  counts[B2B_COUNT_LOST]);
+      if (b2b_model_revert(h->ch.model, h->msg, sizeof h->msg)) {
+        fprintf(stderr, "rank %d: revert: %s\n", h->rank, h->msg);
+        fail = 1;
+        break;
+      }
+      VecCopy(Uc, U);
+      dt *= 0.5;
+      good = 0;
+      if (dt < dt_min) {
+        PetscPrintf(h->comm, "step below %g: giving up\n", dt_min);
+        fail = 1;
+      }
+    }
+  }
+  PetscFree2(h->coo_i, h->coo_j);
+  h->coo_n = 0;
+  SNESDestroy(&snes);
+  MatDestroy(&J);
+  VecDestroy(&F);
+  VecDestroy(&Uc);
+  return fail;
+}
