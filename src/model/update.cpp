@@ -82,33 +82,8 @@ class Updater {
   Problem run();
 
  private:
-  // One evaluated pair that a later stage reads: one with a record
-  // (pair_record.hpp: active, open, or outside with a committed history) or
-  // whose outputs overflowed. Every other evaluated pair leaves only its
-  // count.
-  struct Item {
-    int a, b, gp;
-    int8_t status = -1;     // B2B_CONTACT_* of its evaluation
-    bool overflow = false;  // an output of the element is not finite
-    // Lengths of its committed and of its new history: a line pair
-    // (GroupPair::line) has (n + 1) point histories for n integration points.
-    int hist_old_len = 0;
-    int hist_len = 0;
-    const double* hist_old = nullptr;  // committed history, or null (fresh)
-    const double* rec = nullptr;       // its record, or null
-    const double* tangent = nullptr;   // ACTIVE, with tangents: in tangent_blocks_
-    uint64_t key() const { return pair_key(a, b); }
-  };
-  // What one chunk of the evaluation leaves (filled by the thread that
-  // evaluates it, so nothing of it depends on the threads).
-  struct ChunkOut {
-    std::vector<Item> kept;  // in work-item order
-    size_t kept_candidates = 0;  // of them, from candidates (the rest: extras)
-    int counts[B2B_MODEL_COUNTS_LEN] = {0};  // the pairs it evaluated and did not keep
-    int evaluated = 0, near = 0;
-    int bad_segment = -1;  // the lowest segment that could not be built (-1: none)
-    curve::Failure fail;   // and why
-  };
+  using Item = UpdateItem;
+  using ChunkOut = UpdateChunk;
   Model& m_;
   UpdateWorkspace& ws_;
   const double* x_;
@@ -134,10 +109,11 @@ class Updater {
   // evaluated pairs; candidates within contact reach.
   int unkept_[B2B_MODEL_COUNTS_LEN] = {0};
   int evaluated_ = 0, near_ = 0;
-  // The items' records and tangents in blocks of exact size at stable
-  // addresses: one per chunk of the parallel evaluation, then one per pair
-  // evaluated again after it (crossing, handover). No block is copied into
-  // another: the tangents go to the model as they are.
+  // The items' records and tangents in blocks at stable addresses: one per
+  // chunk of the parallel evaluation (the records' in ws_.records), then
+  // one per pair evaluated again after it (crossing, handover: records_).
+  // No tangent block is copied into another: they go to the model as they
+  // are, at their exact size.
   std::vector<std::vector<double>> records_, tangent_blocks_;
   std::vector<double> fresh_;             // zeros: a fresh history
   int hops_ = 0, lost_ = 0;
@@ -658,10 +634,10 @@ void Updater::evaluate_chunk(int c, size_t n_work, SegmentCache& cache, ChunkOut
     out.kept.push_back(it);
     out.kept_candidates += k < candidates().size();
   }
-  if (!recs.empty()) records_[c].assign(recs.begin(), recs.end());
+  if (!recs.empty()) ws_.records[c].assign(recs.begin(), recs.end());
   if (!Ks.empty()) tangent_blocks_[c].assign(Ks.begin(), Ks.end());
   for (size_t j = 0; j < out.kept.size(); ++j) {
-    if (rec_at[j] >= 0) out.kept[j].rec = records_[c].data() + rec_at[j];
+    if (rec_at[j] >= 0) out.kept[j].rec = ws_.records[c].data() + rec_at[j];
     if (K_at[j] >= 0) out.kept[j].tangent = tangent_blocks_[c].data() + K_at[j];
   }
 }
@@ -689,9 +665,15 @@ Problem Updater::evaluate_all() {
   // One block of records and one of tangents per chunk, each filled by the
   // thread that evaluates the chunk: the layout does not depend on the
   // threads.
-  records_.assign(n_chunks, std::vector<double>());
+  // (The chunks' outputs and record blocks are the workspace's, reused:
+  // an update allocates little in proportion to its candidates.)
+  std::vector<std::vector<double>>& records = ws_.records;
+  if (records.size() < static_cast<size_t>(n_chunks)) records.resize(n_chunks);
+  for (int c = 0; c < n_chunks; ++c) records[c].clear();
   tangent_blocks_.assign(want_tangent_ ? n_chunks : 0, std::vector<double>());
-  std::vector<ChunkOut> outs(n_chunks);
+  std::vector<ChunkOut>& outs = ws_.chunks;
+  if (outs.size() < static_cast<size_t>(n_chunks)) outs.resize(n_chunks);
+  for (int c = 0; c < n_chunks; ++c) outs[c].reset();
   std::atomic<bool> thrown{false};  // no exception may leave a parallel region
 #ifdef B2B_HAVE_OPENMP
 #pragma omp parallel num_threads(threads) if (n_work >= static_cast<size_t>(kParallelPairs))

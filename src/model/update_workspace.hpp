@@ -5,15 +5,55 @@
 // next: each update overwrites what it reads.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
+#include "contact_state.hpp"
 #include "crossing.hpp"
 #include "search.hpp"
 #include "segment_cache.hpp"
 
 namespace b2b {
 namespace model {
+
+// One evaluated pair that a later stage of the update reads: one with a
+// record (pair_record.hpp: active, open, or outside with a committed
+// history) or whose outputs overflowed. Every other evaluated pair leaves
+// only its count.
+struct UpdateItem {
+  int a, b, gp;
+  int8_t status = -1;     // B2B_CONTACT_* of its evaluation
+  bool overflow = false;  // an output of the element is not finite
+  // Lengths of its committed and of its new history: a line pair
+  // (GroupPair::line) has (n + 1) point histories for n integration points.
+  int hist_old_len = 0;
+  int hist_len = 0;
+  const double* hist_old = nullptr;  // committed history, or null (fresh)
+  const double* rec = nullptr;       // its record, or null
+  const double* tangent = nullptr;   // ACTIVE, with tangents: in a tangent block
+  uint64_t key() const { return pair_key(a, b); }
+};
+
+// What one chunk of the update's evaluation leaves (filled by the thread
+// that evaluates it, so nothing of it depends on the threads).
+struct UpdateChunk {
+  std::vector<UpdateItem> kept;  // in work-item order
+  size_t kept_candidates = 0;    // of them, from candidates (the rest: extras)
+  int counts[16] = {0};          // B2B_COUNT_*: the pairs it evaluated and did not keep
+  int evaluated = 0, near = 0;
+  int bad_segment = -1;  // the lowest segment that could not be built (-1: none)
+  curve::Failure fail;   // and why
+  void reset() {
+    kept.clear();
+    kept_candidates = 0;
+    std::fill(std::begin(counts), std::end(counts), 0);
+    evaluated = near = 0;
+    bad_segment = -1;
+    fail = curve::Failure();
+  }
+};
 
 struct UpdateWorkspace {
   // Per segment: its box on the current coordinates, and (after a commit)
@@ -27,6 +67,10 @@ struct UpdateWorkspace {
   // number of sets (SegmentCache::choose_sets; 0: not chosen yet).
   std::vector<SegmentCache> caches;
   int cache_sets = 0;
+  // Per chunk of the evaluation: its outputs and its block of records (read
+  // until the update ends; the tangent blocks go to the model).
+  std::vector<UpdateChunk> chunks;
+  std::vector<std::vector<double>> records;
 };
 
 }  // namespace model
