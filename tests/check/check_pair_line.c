@@ -54,24 +54,8 @@ static const double kPi = 3.14159265358979323846;
 /* ------------------------------------------------------------- helpers */
 
 static b2b_params *line_params(int law, int type, double mu, int tangent) {
-  b2b_params *p = NULL;
-  char msg[B2B_ERRMSG_LEN];
-  ck_assert(b2b_params_create(&p, msg, sizeof msg) == B2B_OK);
-  ck_assert(b2b_params_set_real(p, "penalty", EPS_N, msg, sizeof msg) == B2B_OK);
-  ck_assert(b2b_params_set_int(p, "law", law, msg, sizeof msg) == B2B_OK);
-  if (law == B2B_LAW_QUADRATIC)
-    ck_assert(b2b_params_set_real(p, "regularization_gap", 0.01, msg, sizeof msg) == B2B_OK);
-  ck_assert(b2b_params_set_int(p, "contact_type", type, msg, sizeof msg) == B2B_OK);
-  ck_assert(b2b_params_set_real(p, "line_penalty", EPS_L, msg, sizeof msg) == B2B_OK);
-  ck_assert(b2b_params_set_int(p, "tangent", tangent, msg, sizeof msg) == B2B_OK);
-  if (mu > 0) {
-    ck_assert(b2b_params_set_real(p, "friction", mu, msg, sizeof msg) == B2B_OK);
-    ck_assert(b2b_params_set_real(p, "tangential_penalty", EPS_T, msg, sizeof msg) == B2B_OK);
-    ck_assert(b2b_params_set_real(p, "line_tangential_penalty", EPS_LT, msg, sizeof msg) ==
-              B2B_OK);
-  }
-  ck_assert_msg(b2b_params_finalize(p, msg, sizeof msg) == B2B_OK, "%s", msg);
-  return p;
+  const tst_line_spec spec = {EPS_N, EPS_L, mu, EPS_T, EPS_LT};
+  return tst_line_params(law, type, tangent, &spec);
 }
 
 typedef struct {

@@ -139,6 +139,29 @@ b2b_params *tst_params_friction(int law, double penalty, double g0, double mu, d
   return finalized(p);
 }
 
+b2b_params *tst_line_params(int law, int type, int tangent, const tst_line_spec *spec) {
+  b2b_params *p = normal_params(law, spec->eps_n, 0.01);
+  char msg[B2B_ERRMSG_LEN] = "";
+  ck_assert_msg(b2b_params_set_int(p, "contact_type", type, msg, sizeof msg) == B2B_OK,
+                "contact_type: %s", msg);
+  ck_assert_msg(b2b_params_set_real(p, "line_penalty", spec->eps_l, msg, sizeof msg) == B2B_OK,
+                "line_penalty: %s", msg);
+  if (tangent >= 0)
+    ck_assert_msg(b2b_params_set_int(p, "tangent", tangent, msg, sizeof msg) == B2B_OK,
+                  "tangent: %s", msg);
+  if (spec->mu > 0) {
+    ck_assert_msg(b2b_params_set_real(p, "friction", spec->mu, msg, sizeof msg) == B2B_OK,
+                  "friction: %s", msg);
+    ck_assert_msg(b2b_params_set_real(p, "tangential_penalty", spec->eps_t, msg, sizeof msg) ==
+                      B2B_OK,
+                  "tangential_penalty: %s", msg);
+    ck_assert_msg(
+        b2b_params_set_real(p, "line_tangential_penalty", spec->eps_lt, msg, sizeof msg) == B2B_OK,
+        "line_tangential_penalty: %s", msg);
+  }
+  return finalized(p);
+}
+
 int tst_history_len(const b2b_params *params) {
   int n = -1;
   char msg[B2B_ERRMSG_LEN] = "";

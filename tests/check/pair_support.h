@@ -30,6 +30,18 @@ int tst_pair(const b2b_params *params, const tst_pair_spec *spec, const double X
  * eps_t > 0, "tangential_penalty" = eps_t (fails the test on error). */
 b2b_params *tst_params_friction(int law, double penalty, double g0, double mu, double eps_t);
 
+/* Penalties and friction of a line-contact parameter set: eps_n the point
+ * element's penalty, eps_l the line penalty; with mu > 0, Coulomb friction
+ * with tangential penalties eps_t (point) and eps_lt (line). */
+typedef struct {
+  double eps_n, eps_l, mu, eps_t, eps_lt;
+} tst_line_spec;
+
+/* A finalized line-contact parameter set (fails the test on error): law
+ * (the quadratic law with regularization gap 0.01), "contact_type" type,
+ * "tangent" option tangent (< 0: the default), the penalties of spec. */
+b2b_params *tst_line_params(int law, int type, int tangent, const tst_line_spec *spec);
+
 /* b2b_params_history_size (fails the test on error). */
 int tst_history_len(const b2b_params *params);
 
