@@ -934,6 +934,33 @@ module b2b
       character(len=*), intent(out), optional :: errmsg
     end subroutine
 
+    !> An optional array's address and shape, as the pair procedures pass
+    !> them on: (c_null_ptr, -1) where absent. (gfortran 12 passing an absent
+    !> optional contiguous array on to another optional dummy loads through
+    !> its null data pointer: an UBSan finding.)
+    module subroutine optional_address(p, sh, addr, actual_shape)
+      type(c_ptr), intent(out) :: p
+      integer, intent(out) :: sh(2)
+      type(c_ptr), intent(in), optional :: addr
+      integer, intent(in), optional :: actual_shape(2)
+    end subroutine
+
+    !> The optional tangent (ldk,24) and end tangents (3,4) of a pair
+    !> procedure, given by address and shape (shape -1: absent), as its C
+    !> call takes them: pk and ldk (24 where absent), pt. A wrong shape is
+    !> B2B_ERR_SIZE (ok = .false.).
+    module subroutine check_pair_optionals(procname, tangent, kshape, end_tangents, tshape, pk, &
+                                           ldk, pt, ok, ierr, errmsg)
+      character(len=*), intent(in) :: procname
+      type(c_ptr), intent(in) :: tangent, end_tangents
+      integer, intent(in) :: kshape(2), tshape(2)
+      type(c_ptr), intent(out) :: pk, pt
+      integer(c_int), intent(out) :: ldk
+      logical, intent(out) :: ok
+      integer, intent(out), optional :: ierr
+      character(len=*), intent(out), optional :: errmsg
+    end subroutine
+
     !> check_ints for the elements of an array argument a(:, :).
     module subroutine check_int_matrix(procname, argname, a, ok, ierr, errmsg)
       character(len=*), intent(in) :: procname, argname

@@ -256,21 +256,6 @@ contains
                    contact_status, info, residual, pk, kshape, pt, tshape, ierr, errmsg)
   end procedure
 
-  ! An optional array's address and shape for eval_pair: (c_null_ptr, -1)
-  ! where absent.
-  subroutine optional_address(p, sh, addr, actual_shape)
-    type(c_ptr), intent(out) :: p
-    integer, intent(out) :: sh(2)
-    type(c_ptr), intent(in), optional :: addr
-    integer, intent(in), optional :: actual_shape(2)
-    p = c_null_ptr
-    sh = -1
-    if (present(addr)) then
-      p = addr
-      sh = actual_shape
-    end if
-  end subroutine
-
   module procedure b2b_pair_eval_ends
     character(len=*), parameter :: me = 'b2b_pair_eval_ends'
     logical :: ok
@@ -341,29 +326,9 @@ contains
       call finish_size(me, 'residual', shape(residual), [B2B_PAIR_NDOF], ierr, errmsg)
       return
     end if
-    pk = c_null_ptr
-    pt = c_null_ptr
-    ldk = B2B_PAIR_NDOF
-    if (kshape(1) >= 0) then
-      if (kshape(1) < B2B_PAIR_NDOF .or. kshape(2) /= B2B_PAIR_NDOF) then
-        call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': tangent has shape (' // &
-                         shape_text(kshape) // '), expected (ldk,24) with ldk >= 24', &
-                         ierr, errmsg)
-        return
-      end if
-      call check_ints(me, [character(len=15) :: 'size(tangent,1)'], [kshape(1)], ok, &
-                      ierr, errmsg)
-      if (.not. ok) return
-      pk = tangent
-      ldk = int(kshape(1), c_int)
-    end if
-    if (tshape(1) >= 0) then
-      if (.not. shape_is(tshape, [3, 4])) then
-        call finish_size(me, 'end_tangents', tshape, [3, 4], ierr, errmsg)
-        return
-      end if
-      pt = end_tangents
-    end if
+    call check_pair_optionals(me, tangent, kshape, end_tangents, tshape, pk, ldk, pt, ok, ierr, &
+                              errmsg)
+    if (.not. ok) return
     cseg = int(reshape(segments, [6]), c_int)
     cstatus = 0
     buf = c_null_char

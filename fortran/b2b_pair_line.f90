@@ -48,7 +48,8 @@ contains
   module procedure b2b_pair_eval_line
     character(len=*), parameter :: me = 'b2b_pair_eval_line'
     character(kind=c_char) :: buf(B2B_ERRMSG_LEN)
-    type(c_ptr) :: pk, pt, pp
+    type(c_ptr) :: ka, ta, pk, pt, pp
+    integer :: kshape(2), tshape(2)
     integer(c_int) :: st, cseg(6), cstatus, ldk
     real(c_double) :: h0(1), h1(1)
     logical :: ok
@@ -76,24 +77,15 @@ contains
       call finish_size(me, 'residual', shape(residual), [B2B_PAIR_NDOF], ierr, errmsg)
       return
     end if
-    ! Optional arrays by address (see b2b_pair_eval in b2b_pair.f90).
-    pk = c_null_ptr
-    pt = c_null_ptr
+    ! Optional arrays by address (see optional_address).
+    call optional_address(ka, kshape)
+    if (present(tangent)) call optional_address(ka, kshape, c_loc(tangent), shape(tangent))
+    call optional_address(ta, tshape)
+    if (present(end_tangents)) &
+      call optional_address(ta, tshape, c_loc(end_tangents), shape(end_tangents))
+    call check_pair_optionals(me, ka, kshape, ta, tshape, pk, ldk, pt, ok, ierr, errmsg)
+    if (.not. ok) return
     pp = c_null_ptr
-    ldk = B2B_PAIR_NDOF
-    if (present(tangent)) then
-      if (size(tangent, 1) < B2B_PAIR_NDOF .or. size(tangent, 2) /= B2B_PAIR_NDOF) then
-        call finish_text(me, int(B2B_ERR_SIZE, c_int), me // ': tangent has shape (' // &
-                         shape_text(shape(tangent)) // '), expected (ldk,24) with ldk >= 24', &
-                         ierr, errmsg)
-        return
-      end if
-      call check_ints(me, [character(len=15) :: 'size(tangent,1)'], [size(tangent, 1)], ok, &
-                      ierr, errmsg)
-      if (.not. ok) return
-      pk = c_loc(tangent)
-      ldk = int(size(tangent, 1), c_int)
-    end if
     if (present(point_info)) then
       if (.not. shape_is(shape(point_info), [B2B_PAIR_INFO_LEN, n_points])) then
         call finish_size(me, 'point_info', shape(point_info), [B2B_PAIR_INFO_LEN, n_points], &
@@ -101,13 +93,6 @@ contains
         return
       end if
       pp = c_loc(point_info)
-    end if
-    if (present(end_tangents)) then
-      if (.not. shape_is(shape(end_tangents), [3, 4])) then
-        call finish_size(me, 'end_tangents', shape(end_tangents), [3, 4], ierr, errmsg)
-        return
-      end if
-      pt = c_loc(end_tangents)
     end if
     cseg = int(reshape(segments, [6]), c_int)
     cstatus = 0

@@ -70,6 +70,44 @@ contains
     end do
   end procedure
 
+  module procedure optional_address
+    p = c_null_ptr
+    sh = -1
+    if (present(addr)) then
+      p = addr
+      sh = actual_shape
+    end if
+  end procedure
+
+  module procedure check_pair_optionals
+    pk = c_null_ptr
+    pt = c_null_ptr
+    ldk = B2B_PAIR_NDOF
+    ok = .false.
+    if (kshape(1) >= 0) then
+      if (kshape(1) < B2B_PAIR_NDOF .or. kshape(2) /= B2B_PAIR_NDOF) then
+        call finish_text(procname, int(B2B_ERR_SIZE, c_int), procname // ': tangent has shape (' &
+                         // shape_text(kshape) // '), expected (ldk,24) with ldk >= 24', ierr, &
+                         errmsg)
+        return
+      end if
+      call check_ints(procname, [character(len=15) :: 'size(tangent,1)'], [kshape(1)], ok, ierr, &
+                      errmsg)
+      if (.not. ok) return
+      pk = tangent
+      ldk = int(kshape(1), c_int)
+    end if
+    if (tshape(1) >= 0) then
+      if (.not. shape_is(tshape, [3, 4])) then
+        call finish_size(procname, 'end_tangents', tshape, [3, 4], ierr, errmsg)
+        ok = .false.
+        return
+      end if
+      pt = end_tangents
+    end if
+    ok = .true.
+  end procedure
+
   module procedure check_pair_shapes
     ok = .false.
     if (.not. shape_is(shape(segments), [3, 2])) then
