@@ -10,7 +10,9 @@
 !>  * contact:  type(b2b_params) with b2b_params_create, b2b_params_destroy,
 !>              b2b_params_set_real, b2b_params_set_int, b2b_params_get_real,
 !>              b2b_params_get_int, b2b_params_finalize, b2b_params_history_size;
-!>              b2b_pair_eval (with Coulomb friction), b2b_pair_history_handover
+!>              b2b_pair_eval (with Coulomb friction), b2b_pair_eval_ends
+!>              (end contact), b2b_pair_history_handover; line contact:
+!>              b2b_pair_eval_line, b2b_pair_line_points
 !>  * model:    type(b2b_model) with b2b_model_create, _destroy, _add_beam,
 !>              _set_group_pair, _set_self_contact, _set_real, _set_int,
 !>              _finalize, _update, _contact_count, _get_contact, _add_residual,
@@ -21,7 +23,10 @@
 !>              Prescribed dofs; doc/host-integration.md): _update_xu,
 !>              _add_residual_scaled, _add_tangent_dense_scaled,
 !>              _add_tangent_banded_scaled, _tangent_profile,
-!>              _add_tangent_profile, _add_constrained_product
+!>              _add_tangent_profile, _add_constrained_product;
+!>              distributed models (doc/distributed.md): _set_beam_global,
+!>              _set_ghost_segments, _get_contact_global, _migration_count,
+!>              _migration_info, _migration_pack, _migration_unpack
 !>
 !> Conventions of the wrappers:
 !>  * Arrays are assumed-shape and must be contiguous (sections are copied in
@@ -67,6 +72,7 @@
 !>                     of every procedure (the private helpers' too)
 !>  * b2b_curve.f90    submodule curve_layer: core and curve bodies
 !>  * b2b_pair.f90     submodule pair_layer: contact parameters and element
+!>  * b2b_pair_line.f90 submodule line_layer: the line-contact element
 !>  * b2b_model.f90    submodule model_layer: contact model
 !>  * b2b_support.f90  submodule support_layer: the private helpers all
 !>                     layers share (status and message handling, integer
