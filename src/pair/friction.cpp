@@ -169,7 +169,19 @@ void five_term_pass(int m, const double* __restrict Jx, const double* __restrict
                     const double* __restrict ay, const double* __restrict az,
                     const double* __restrict C0, const double* __restrict C1,
                     double* __restrict Kc) {
-  for (int c = 0; c < m; ++c) {
+  int c = 0;
+  for (; c + 1 < m; c += 2) {  // two columns per pass: each row's values loaded once
+    double* __restrict col0 = Kc + kNdof * c;
+    double* __restrict col1 = col0 + kNdof;
+    const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
+    const double ux = ax[c + 1], uy = ay[c + 1], uz = az[c + 1], d0 = C0[c + 1], d1 = C1[c + 1];
+    for (int r = 0; r < m; ++r) {
+      const double jx = Jx[r], jy = Jy[r], jz = Jz[r], v0 = w0[r], v1 = w1[r];
+      col0[r] = (jx * tx + jy * ty + jz * tz) + (v0 * c0 + v1 * c1);
+      col1[r] = (jx * ux + jy * uy + jz * uz) + (v0 * d0 + v1 * d1);
+    }
+  }
+  if (c < m) {
     double* col = Kc + kNdof * c;
     const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
     for (int r = 0; r < m; ++r)

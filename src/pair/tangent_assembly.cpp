@@ -47,6 +47,21 @@ bool mirror_upper_checked(double* K) {
   return z0 + z1 == 0.0;
 }
 
+// Whether the n contiguous entries of v are finite (n a multiple of 4):
+// entry * 0 summed in four independent parts, which the compiler packs into
+// two vector sums (all_finite's two scalar sums, column by column, cost
+// half as much again on the whole of K).
+bool all_finite4(const double* v, int n) {
+  double a0 = 0.0, a1 = 0.0, a2 = 0.0, a3 = 0.0;
+  for (int i = 0; i < n; i += 4) {
+    a0 += v[i] * 0.0;
+    a1 += v[i + 1] * 0.0;
+    a2 += v[i + 2] * 0.0;
+    a3 += v[i + 3] * 0.0;
+  }
+  return (a0 + a1) + (a2 + a3) == 0.0;
+}
+
 // K (zeroed) at the used rows and columns from the upper triangle of the
 // compact Kc, both triangles written; whether those entries are finite.
 bool scatter_symmetric(const double* Kc, int m, const int* cols, double* K) {
@@ -168,8 +183,8 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
       B.seg->add_contracted_hessian(k.eta, k.n, f, K + 12 + 12 * kNdof, kNdof);
     }
   }
-  if (!finite_known)
-    for (int c = 0; c < kNdof && res.finite; ++c) res.finite = all_finite(K + kNdof * c, kNdof);
+  static_assert(kNdof * kNdof % 4 == 0, "K in fours");
+  if (!finite_known) res.finite = all_finite4(K, kNdof * kNdof);
   return res;
 }
 
