@@ -66,6 +66,32 @@ bool TangentTerm::evaluate(const double* X) {
 }
 
 void TangentTerm::jacobian() {
+  if (dir == Dir::Chord) {
+    // u = x_c - x_a: duhat = (I - uhat uhat^T) (dx_c - dx_a) / r, so with
+    // S = sigma L (I - uhat uhat^T) / r and E = sigma uhat eL^T the block of
+    // slot k is [k = c] S - [k = a] S + [k = q] E - [k = p] E, written once
+    // (the same sums as the general path below, without clearing jac and
+    // adding to it block by block).
+    const double s = sigma * L_ / r_;
+    double S[9], E[9];
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        S[i + 3 * j] = s * ((i == j ? 1.0 : 0.0) - uhat_[i] * uhat_[j]);
+        E[i + 3 * j] = sigma * uhat_[i] * eL_[j];
+      }
+    for (int k = 0; k < 4; ++k) {
+      double* J = jac + 9 * k;
+      const bool on_s = (k == a || k == c), on_e = (k == p || k == q);
+      const double ss = k == c ? 1.0 : -1.0, se = k == q ? 1.0 : -1.0;
+      for (int m = 0; m < 9; ++m) {
+        double v = 0.0;
+        if (on_s) v = ss * S[m];
+        if (on_e) v = on_s ? v + se * E[m] : se * E[m];
+        J[m] = v;
+      }
+    }
+    return;
+  }
   // d(u~)/dx_s blocks
   switch (dir) {
     case Dir::Constant:
