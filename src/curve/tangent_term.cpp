@@ -97,15 +97,8 @@ void TangentTerm::jacobian() {
     case Dir::Constant:
       n_slots_ = 0;
       break;
-    case Dir::Chord:
-      n_slots_ = 2;
-      slot_[0] = a;
-      slot_[1] = c;
-      for (int k = 0; k < 9; ++k) {
-        du_[0][k] = (k % 4 == 0) ? -1.0 : 0.0;
-        du_[1][k] = (k % 4 == 0) ? 1.0 : 0.0;
-      }
-      break;
+    case Dir::Chord:  // written above
+      return;
     case Dir::Weighted:
       // u = s1 w1 + s2 w2, s1 = |w2|^2, s2 = |w1|^2, w1 = x_b - x_a, w2 = x_c - x_b:
       // du/dx_a = -s1 I - 2 w2 w1^T

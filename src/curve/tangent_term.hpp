@@ -68,6 +68,7 @@ struct TangentTerm {
   // while u~ stays O(1) for any mesh size (no overflow at 1e100).
   double k0_ = 1, s1_ = 0, s2_ = 0, w1_[3] = {0, 0, 0}, w2_[3] = {0, 0, 0};
   // d(u~)/dx_s as 3x3 blocks (column-major) for the slots slot_[0..n_slots_)
+  // (Constant and Weighted; jacobian() writes the chord's blocks directly)
   int n_slots_ = 0, slot_[3] = {0, 0, 0};
   double du_[3][9];
 };
