@@ -111,6 +111,7 @@ TangentTerm& Segment::set_tangent(int k, double sigma, int p, int q) {
 Failure Segment::build(int kind, int start_rule, int end_rule, const double* X,
                        const double* unit_tangents, bool derivatives) {
   linear_kind_ = false;
+  interior_nodal_ = false;
   for (Term& t : term_) t.nonlinear = false;
   for (int i = 0; i < 3; ++i) base_[i] = X[3 + i];  // x2, read by every kind
   Failure f;
@@ -178,6 +179,7 @@ Failure Segment::build_nodal(TangentTerm::Dir dir, int start_rule, int end_rule,
     set_given(set_tangent(3, 0.5, 1, 2), unit_tangents + 3);
   else
     set_direction(set_tangent(3, 0.5, 1, 2), dir, 1, 2, 3);
+  interior_nodal_ = start_rule == B2B_END_NEIGHBOUR && end_rule == B2B_END_NEIGHBOUR;
   return Failure();
 }
 
@@ -330,21 +332,29 @@ inline double zs(const double* Z, int alpha, int beta) {
   }
 }
 
-// Block (I, J), I <= J, of D^T Z D (slot k moves z_k by +1 and z_k+1 by -1):
-//   Z_IJ - Z_I+1,J - Z_I,J+1 + Z_I+1,J+1,
-// added to H at (I, J) and, unless kUpper, its transpose at (J, I); a
-// diagonal block on its upper triangle (and, unless kUpper, mirrored).
-template <int I, int J, bool kUpper>
-inline void add_dzd_block(const double* Z, double* H, int ld) {
+// H at block (I, J) += the 3x3 block v(a, b): the whole block, and unless
+// kUpper its transpose at (J, I); a diagonal block (I = J) on its upper
+// triangle, mirrored unless kUpper (so that it is exactly symmetric).
+template <int I, int J, bool kUpper, typename V>
+inline void add_block(double* H, int ld, V v) {
   double* hij = H + 3 * I + ld * 3 * J;
   double* hji = H + 3 * J + ld * 3 * I;
   for (int b = 0; b < 3; ++b)
     for (int a = 0; a < (I == J ? b + 1 : 3); ++a) {
-      const double v = (zs<I, J>(Z, a, b) - zs<I + 1, J>(Z, a, b)) -
-                       (zs<I, J + 1>(Z, a, b) - zs<I + 1, J + 1>(Z, a, b));
-      hij[a + ld * b] += v;
-      if (!kUpper && (I != J || a != b)) hji[b + ld * a] += v;
+      const double x = v(a, b);
+      hij[a + ld * b] += x;
+      if (!kUpper && (I != J || a != b)) hji[b + ld * a] += x;
     }
+}
+
+// Block (I, J), I <= J, of D^T Z D (slot k moves z_k by +1 and z_k+1 by -1):
+//   Z_IJ - Z_I+1,J - Z_I,J+1 + Z_I+1,J+1, added to H (add_block).
+template <int I, int J, bool kUpper>
+inline void add_dzd_block(const double* Z, double* H, int ld) {
+  add_block<I, J, kUpper>(H, ld, [Z](int a, int b) {
+    return (zs<I, J>(Z, a, b) - zs<I + 1, J>(Z, a, b)) -
+           (zs<I, J + 1>(Z, a, b) - zs<I + 1, J + 1>(Z, a, b));
+  });
 }
 
 template <bool kUpper>
@@ -363,8 +373,103 @@ void add_dzd(const double* Z, double* H, int ld) {
 
 }  // namespace
 
+template <bool kChord, bool kUpper, int kLd>
+void Segment::add_interior_hessians(double c1, double c3, const double* w, double* H) const {
+  // Both tangents have the length L = |x3 - x2| (slots p = 1, q = 2, unit
+  // chord e) and their directions on the slots (a, b, c) = (0, 1, 2) and
+  // (1, 2, 3) (doc/curves.md section 9). With the parts of each tangent's
+  // contraction (TangentTerm::contraction), in X:
+  //   the length's parts, summed: cL (I - e e^T) on the blocks of x2 and x3
+  //   (+ on (1,1), (2,2), - on (1,2)), and dL g^T + g dL^T with dL = -e on
+  //   slot 1, +e on slot 2, and g = sum of both tangents' duhat^T w in X:
+  //   -Gb at a, Gb - Gc at b, Gc at c (g0..g3 below);
+  //   each direction's part N in X: (a,a) Nbb, (a,b) Nbc - Nbb, (a,c) -Nbc,
+  //   (b,b) Nbb - Nbc - Nbc^T + Ncc, (b,c) Nbc - Ncc, (c,c) Ncc; for the
+  //   chord (all three M) only M on (a,a), (c,c) and -M on (a,c) remain.
+  // This is D^T Z D of add_tangent_hessians with its cancellations done.
+  TangentTerm::Contraction s, t;  // start and end tangent
+  tangent_[0].contraction(w, c1, s);
+  tangent_[1].contraction(w, c3, t);
+  const double* e = s.e;  // = t.e: the same chord of the same nodes
+  const double cL = s.cL + t.cL;
+  const double* sGc = kChord ? s.Gb : s.Gc;
+  const double* tGc = kChord ? t.Gb : t.Gc;
+  double g0[3], g1[3], g2[3], g3[3];
+  for (int i = 0; i < 3; ++i) {
+    g0[i] = -s.Gb[i];
+    g1[i] = kChord ? -t.Gb[i] : (s.Gb[i] - sGc[i]) - t.Gb[i];
+    g2[i] = kChord ? s.Gb[i] : sGc[i] + (t.Gb[i] - tGc[i]);
+    g3[i] = tGc[i];
+  }
+  auto Q = [&](int a, int b) { return cL * ((a == b ? 1.0 : 0.0) - e[a] * e[b]); };
+  if constexpr (kChord) {
+    const double* M0 = s.Nbb;
+    const double* M1 = t.Nbb;
+    add_block<0, 0, kUpper>(H, kLd, [&](int a, int b) { return M0[a + 3 * b]; });
+    add_block<0, 1, kUpper>(H, kLd, [&](int a, int b) { return -g0[a] * e[b]; });
+    add_block<0, 2, kUpper>(H, kLd, [&](int a, int b) { return g0[a] * e[b] - M0[a + 3 * b]; });
+    add_block<1, 1, kUpper>(H, kLd, [&](int a, int b) {
+      return (M1[a + 3 * b] + Q(a, b)) - (e[a] * g1[b] + g1[a] * e[b]);
+    });
+    add_block<1, 2, kUpper>(
+        H, kLd, [&](int a, int b) { return (g1[a] * e[b] - e[a] * g2[b]) - Q(a, b); });
+    add_block<1, 3, kUpper>(H, kLd, [&](int a, int b) { return -e[a] * g3[b] - M1[a + 3 * b]; });
+    add_block<2, 2, kUpper>(H, kLd, [&](int a, int b) {
+      return (M0[a + 3 * b] + Q(a, b)) + (e[a] * g2[b] + g2[a] * e[b]);
+    });
+    add_block<2, 3, kUpper>(H, kLd, [&](int a, int b) { return e[a] * g3[b]; });
+    add_block<3, 3, kUpper>(H, kLd, [&](int a, int b) { return M1[a + 3 * b]; });
+  } else {
+    // The directions' parts in X: the start tangent's (b, b), (b, c), (c, c)
+    // on slots (1, 1), (1, 2), (2, 2) meet the end tangent's (a, a), (a, b),
+    // (b, b) there.
+    auto Nab = [](const TangentTerm::Contraction& c, int a, int b) {
+      return c.Nbc[a + 3 * b] - c.Nbb[a + 3 * b];
+    };
+    auto Nbb = [](const TangentTerm::Contraction& c, int a, int b) {
+      return (c.Nbb[a + 3 * b] + c.Ncc[a + 3 * b]) - (c.Nbc[a + 3 * b] + c.Nbc[b + 3 * a]);
+    };
+    auto Nbc = [](const TangentTerm::Contraction& c, int a, int b) {
+      return c.Nbc[a + 3 * b] - c.Ncc[a + 3 * b];
+    };
+    add_block<0, 0, kUpper>(H, kLd, [&](int a, int b) { return s.Nbb[a + 3 * b]; });
+    add_block<0, 1, kUpper>(H, kLd, [&](int a, int b) { return Nab(s, a, b) - g0[a] * e[b]; });
+    add_block<0, 2, kUpper>(H, kLd, [&](int a, int b) { return g0[a] * e[b] - s.Nbc[a + 3 * b]; });
+    add_block<1, 1, kUpper>(H, kLd, [&](int a, int b) {
+      return (Nbb(s, a, b) + t.Nbb[a + 3 * b]) + (Q(a, b) - (e[a] * g1[b] + g1[a] * e[b]));
+    });
+    add_block<1, 2, kUpper>(H, kLd, [&](int a, int b) {
+      return (Nbc(s, a, b) + Nab(t, a, b)) + ((g1[a] * e[b] - e[a] * g2[b]) - Q(a, b));
+    });
+    add_block<1, 3, kUpper>(H, kLd, [&](int a, int b) { return -e[a] * g3[b] - t.Nbc[a + 3 * b]; });
+    add_block<2, 2, kUpper>(H, kLd, [&](int a, int b) {
+      return (s.Ncc[a + 3 * b] + Nbb(t, a, b)) + (Q(a, b) + (e[a] * g2[b] + g2[a] * e[b]));
+    });
+    add_block<2, 3, kUpper>(H, kLd, [&](int a, int b) { return Nbc(t, a, b) + e[a] * g3[b]; });
+    add_block<3, 3, kUpper>(H, kLd, [&](int a, int b) { return t.Ncc[a + 3 * b]; });
+  }
+}
+
 void Segment::add_tangent_hessians(double c1, double c3, const double* w, double* H, int ld,
                                    bool upper) const {
+  if (interior_nodal_ && (ld == 24 || ld == 12)) {
+    const bool chord = tangent_[0].dir == TangentTerm::Dir::Chord;
+    if (ld == 24) {  // the pair's tangent
+      if (chord && upper)
+        add_interior_hessians<true, true, 24>(c1, c3, w, H);
+      else if (chord)
+        add_interior_hessians<true, false, 24>(c1, c3, w, H);
+      else if (upper)
+        add_interior_hessians<false, true, 24>(c1, c3, w, H);
+      else
+        add_interior_hessians<false, false, 24>(c1, c3, w, H);
+    } else if (chord) {  // a segment's own 12 x 12 (contracted_hessians)
+      add_interior_hessians<true, false, 12>(c1, c3, w, H);
+    } else {
+      add_interior_hessians<false, false, 12>(c1, c3, w, H);
+    }
+    return;
+  }
   // Both end tangents are functions of the node differences z_j = x_j -
   // x_{j-1} (j = 1..3). Their contractions are summed in z, the upper
   // triangle of a 9x9 matrix Z, and taken to X once (D^T Z D, add_dzd).

@@ -90,6 +90,10 @@ class Segment {
   TangentTerm& tangent_of(int k) { return tangent_[k / 2]; }
   const TangentTerm& tangent_of(int k) const { return tangent_[k / 2]; }
   bool linear_kind_ = false;
+  // An interior nodal segment (neighbours at both ends): both end tangents
+  // are nonlinear, of the same direction rule, on the slots (0, 1, 2) and
+  // (1, 2, 3), with the same length |x3 - x2| (add_interior_hessians).
+  bool interior_nodal_ = false;
   // Node x2 (slot 1, read by every kind): the positions are kept as offsets
   // to it, formed at the size of the patch (see point_from).
   double base_[3] = {0, 0, 0};
@@ -108,6 +112,11 @@ class Segment {
   // the whole 12x12 block or (upper) its upper triangle.
   void add_tangent_hessians(double c1, double c3, const double* w, double* H, int ld,
                             bool upper) const;
+  // The same for an interior nodal segment (kLd the leading dimension of H),
+  // assembled in X block by block from the tangents' parts, with no 9x9 Z
+  // in between.
+  template <bool kChord, bool kUpper, int kLd>
+  void add_interior_hessians(double c1, double c3, const double* w, double* H) const;
 };
 
 }  // namespace curve

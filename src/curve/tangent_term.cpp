@@ -9,6 +9,21 @@
 namespace b2b {
 namespace curve {
 
+namespace {
+
+// A[i + 3 j] = v(i, j) for a symmetric 3x3 A: the upper triangle computed,
+// the lower one copied (exactly symmetric, a third fewer products).
+template <typename V>
+inline void fill_symmetric(double* A, V v) {
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i <= j; ++i) A[i + 3 * j] = v(i, j);
+  A[1] = A[3];
+  A[2] = A[6];
+  A[5] = A[7];
+}
+
+}  // namespace
+
 bool TangentTerm::evaluate(const double* X) {
   double d[3];
   sub3(X + 3 * q, X + 3 * p, d);
@@ -51,20 +66,39 @@ bool TangentTerm::evaluate(const double* X) {
 }
 
 void TangentTerm::jacobian() {
+  if (dir == Dir::Chord) {
+    // u = x_c - x_a: duhat = (I - uhat uhat^T) (dx_c - dx_a) / r, so with
+    // S = sigma L (I - uhat uhat^T) / r and E = sigma uhat eL^T the block of
+    // slot k is [k = c] S - [k = a] S + [k = q] E - [k = p] E, written once
+    // (the same sums as the general path below, without clearing jac and
+    // adding to it block by block).
+    const double s = sigma * L_ / r_;
+    double S[9], E[9];
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        S[i + 3 * j] = s * ((i == j ? 1.0 : 0.0) - uhat_[i] * uhat_[j]);
+        E[i + 3 * j] = sigma * uhat_[i] * eL_[j];
+      }
+    for (int k = 0; k < 4; ++k) {
+      double* J = jac + 9 * k;
+      const bool on_s = (k == a || k == c), on_e = (k == p || k == q);
+      const double ss = k == c ? 1.0 : -1.0, se = k == q ? 1.0 : -1.0;
+      for (int m = 0; m < 9; ++m) {
+        double v = 0.0;
+        if (on_s) v = ss * S[m];
+        if (on_e) v = on_s ? v + se * E[m] : se * E[m];
+        J[m] = v;
+      }
+    }
+    return;
+  }
   // d(u~)/dx_s blocks
   switch (dir) {
     case Dir::Constant:
       n_slots_ = 0;
       break;
-    case Dir::Chord:
-      n_slots_ = 2;
-      slot_[0] = a;
-      slot_[1] = c;
-      for (int k = 0; k < 9; ++k) {
-        du_[0][k] = (k % 4 == 0) ? -1.0 : 0.0;
-        du_[1][k] = (k % 4 == 0) ? 1.0 : 0.0;
-      }
-      break;
+    case Dir::Chord:  // written above
+      return;
     case Dir::Weighted:
       // u = s1 w1 + s2 w2, s1 = |w2|^2, s2 = |w1|^2, w1 = x_b - x_a, w2 = x_c - x_b:
       // du/dx_a = -s1 I - 2 w2 w1^T
@@ -102,7 +136,7 @@ void TangentTerm::jacobian() {
     }
 }
 
-void TangentTerm::add_contracted_hessian_z(const double* w, double s, double* Z, int ldz) const {
+void TangentTerm::contraction(const double* w, double s, Contraction& out) const {
   // T = sigma L(d) uhat(u~), d = z_q, u~ = k0 u a function of (z_b, z_c):
   //   w . d2T = sigma [ (w.uhat) d2L + dL (x) g + g (x) dL + L w.d2uhat ],
   // g = duhat^T w. All of it lives on the blocks of z_b and z_c (q is one of
@@ -113,19 +147,8 @@ void TangentTerm::add_contracted_hessian_z(const double* w, double s, double* Z,
   // G_x e^T on (x, q), and sigma (w.uhat) d2L = cL (I - e e^T) on (q, q).
   const double wu = dot3(w, uhat_);
   const double t0 = s * sigma;
-  const double cL = t0 * wu / L_;  // d2L = (I - eL eL^T) / L on (q, q)
-  const double e[3] = {eL_[0], eL_[1], eL_[2]};
-  double Q[9];  // cL (I - e e^T)
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) Q[i + 3 * j] = cL * ((i == j ? 1.0 : 0.0) - e[i] * e[j]);
-  auto add_upper = [ldz](double* z, const double* A) {  // upper triangle of a diagonal block
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i <= j; ++i) z[i + ldz * j] += A[i + 3 * j];
-  };
-  if (dir == Dir::Constant) {
-    add_upper(Z + 3 * (q - 1) + ldz * 3 * (q - 1), Q);
-    return;
-  }
+  out.cL = t0 * wu / L_;  // d2L = (I - eL eL^T) / L on (q, q)
+  for (int i = 0; i < 3; ++i) out.e[i] = eL_[i];
   const double inv_r = 1.0 / r_;
   const double uh[3] = {uhat_[0], uhat_[1], uhat_[2]};
   double cw[3];  // (I - uhat uhat^T) w / r: duhat^T w = du~^T cw
@@ -134,60 +157,91 @@ void TangentTerm::add_contracted_hessian_z(const double* w, double s, double* Z,
   // M = -[wu (I - uhat uhat^T) / r + uhat cw^T + cw uhat^T] / r, times t0 L
   const double tL = t0 * L_;
   const double mI = -tL * wu * inv_r * inv_r, mu = tL * wu * inv_r * inv_r, mc = -tL * inv_r;
-  double M[9];
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i)
-      M[i + 3 * j] =
-          (i == j ? mI : 0.0) + mu * uh[i] * uh[j] + mc * (uh[i] * cw[j] + cw[i] * uh[j]);
+  double* M = (dir == Dir::Chord) ? out.Nbb : out.Nbc;  // the weighted blocks are multiples of it
+  fill_symmetric(M, [&](int i, int j) {
+    return (i == j ? mI : 0.0) + mu * uh[i] * uh[j] + mc * (uh[i] * cw[j] + cw[i] * uh[j]);
+  });
 
-  // Blocks Fb^T M Fb, Fb^T M Fc, Fc^T M Fc and G_b, G_c
-  double Bbb[9], Bbc[9], Bcc[9], Gb[3], Gc[3];
-  if (dir == Dir::Chord) {  // u = z_b + z_c: Fb = Fc = I
-    for (int k = 0; k < 9; ++k) Bbb[k] = Bbc[k] = Bcc[k] = M[k];
-    for (int i = 0; i < 3; ++i) Gb[i] = Gc[i] = t0 * cw[i];
-  } else {
-    // Fb = fa I + 2 y2 y1^T, Fc = fb I + 2 y1 y2^T with fa = k0 s1, fb = k0 s2,
-    // y = sqrt(k0) w (u = s1 w1 + s2 w2, s1 = |w2|^2, s2 = |w1|^2, w1 = z_b,
-    // w2 = z_c; the factors keep every product in range, as u~ = k0 u is
-    // O(1)), so with n1 = M y1, n2 = M y2:
-    //   Fb^T M Fb = fa^2 M + 2 fa (y1 n2^T + n2 y1^T) + 4 (y2.n2) y1 y1^T,
-    //   Fc^T M Fc = fb^2 M + 2 fb (y2 n1^T + n1 y2^T) + 4 (y1.n1) y2 y2^T,
-    //   Fb^T M Fc = fa fb M + 2 fa n1 y2^T + 2 fb y1 n2^T + 4 (y2.n1) y1 y2^T,
-    // and cw . d2u~ = k0 [2 (cw.w2) I, 2 (cw w2^T + w1 cw^T); . , 2 (cw.w1) I]
-    // (times sigma L): a multiple of M plus symmetric rank-two terms per block.
-    const double rk = std::sqrt(k0_);
-    const double fa = k0_ * s1_, fb = k0_ * s2_;
-    double y1[3], y2[3], n1[3], n2[3];
-    for (int i = 0; i < 3; ++i) {
-      y1[i] = rk * w1_[i];
-      y2[i] = rk * w2_[i];
-    }
-    for (int i = 0; i < 3; ++i) {
-      n1[i] = M[i] * y1[0] + M[i + 3] * y1[1] + M[i + 6] * y1[2];
-      n2[i] = M[i] * y2[0] + M[i + 3] * y2[1] + M[i + 6] * y2[2];
-    }
-    const double mu11 = dot3(y1, n1), mu22 = dot3(y2, n2), mu12 = dot3(y2, n1);
-    const double cy1 = dot3(cw, y1), cy2 = dot3(cw, y2);
-    const double tau = 2.0 * tL * rk;  // the factor of cw . d2u~ in y
-    const double dbb = tau * cy2, dcc = tau * cy1;
-    double pb[3], pc[3], u[3], v[3];
-    for (int i = 0; i < 3; ++i) {
-      pb[i] = 2.0 * (fa * n2[i] + mu22 * y1[i]);
-      pc[i] = 2.0 * (fb * n1[i] + mu11 * y2[i]);
-      u[i] = 2.0 * fa * n1[i] + tau * cw[i];
-      v[i] = 2.0 * (fb * n2[i] + 2.0 * mu12 * y2[i]) + tau * cw[i];
-      Gb[i] = t0 * (fa * cw[i] + 2.0 * cy2 * y1[i]);  // sigma Fb^T cw
-      Gc[i] = t0 * (fb * cw[i] + 2.0 * cy1 * y2[i]);
-    }
-    const double abb = fa * fa, acc = fb * fb, abc = fa * fb;
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) {
-        const double m = M[i + 3 * j], id = i == j ? 1.0 : 0.0;
-        Bbb[i + 3 * j] = abb * m + (y1[i] * pb[j] + pb[i] * y1[j]) + dbb * id;
-        Bcc[i + 3 * j] = acc * m + (y2[i] * pc[j] + pc[i] * y2[j]) + dcc * id;
-        Bbc[i + 3 * j] = abc * m + (u[i] * y2[j] + y1[i] * v[j]);
-      }
+  if (dir == Dir::Chord) {  // u = z_b + z_c: Fb = Fc = I, all three blocks M
+    for (int i = 0; i < 3; ++i) out.Gb[i] = out.Gc[i] = t0 * cw[i];
+    return;
   }
+  // Fb = fa I + 2 y2 y1^T, Fc = fb I + 2 y1 y2^T with fa = k0 s1, fb = k0 s2,
+  // y = sqrt(k0) w (u = s1 w1 + s2 w2, s1 = |w2|^2, s2 = |w1|^2, w1 = z_b,
+  // w2 = z_c; the factors keep every product in range, as u~ = k0 u is
+  // O(1)), so with n1 = M y1, n2 = M y2:
+  //   Fb^T M Fb = fa^2 M + 2 fa (y1 n2^T + n2 y1^T) + 4 (y2.n2) y1 y1^T,
+  //   Fc^T M Fc = fb^2 M + 2 fb (y2 n1^T + n1 y2^T) + 4 (y1.n1) y2 y2^T,
+  //   Fb^T M Fc = fa fb M + 2 fa n1 y2^T + 2 fb y1 n2^T + 4 (y2.n1) y1 y2^T,
+  // and cw . d2u~ = k0 [2 (cw.w2) I, 2 (cw w2^T + w1 cw^T); . , 2 (cw.w1) I]
+  // (times sigma L): a multiple of M plus symmetric rank-two terms per block.
+  const double rk = std::sqrt(k0_);
+  const double fa = k0_ * s1_, fb = k0_ * s2_;
+  double y1[3], y2[3], n1[3], n2[3];
+  for (int i = 0; i < 3; ++i) {
+    y1[i] = rk * w1_[i];
+    y2[i] = rk * w2_[i];
+  }
+  for (int i = 0; i < 3; ++i) {
+    n1[i] = M[i] * y1[0] + M[i + 3] * y1[1] + M[i + 6] * y1[2];
+    n2[i] = M[i] * y2[0] + M[i + 3] * y2[1] + M[i + 6] * y2[2];
+  }
+  const double mu11 = dot3(y1, n1), mu22 = dot3(y2, n2), mu12 = dot3(y2, n1);
+  const double cy1 = dot3(cw, y1), cy2 = dot3(cw, y2);
+  const double tau = 2.0 * tL * rk;  // the factor of cw . d2u~ in y
+  const double dbb = tau * cy2, dcc = tau * cy1;
+  double pb[3], pc[3], u[3], v[3];
+  for (int i = 0; i < 3; ++i) {
+    pb[i] = 2.0 * (fa * n2[i] + mu22 * y1[i]);
+    pc[i] = 2.0 * (fb * n1[i] + mu11 * y2[i]);
+    u[i] = 2.0 * fa * n1[i] + tau * cw[i];
+    v[i] = 2.0 * (fb * n2[i] + 2.0 * mu12 * y2[i]) + tau * cw[i];
+    out.Gb[i] = t0 * (fa * cw[i] + 2.0 * cy2 * y1[i]);  // sigma Fb^T cw
+    out.Gc[i] = t0 * (fb * cw[i] + 2.0 * cy1 * y2[i]);
+  }
+  const double abb = fa * fa, acc = fb * fb, abc = fa * fb;
+  fill_symmetric(out.Nbb, [&](int i, int j) {
+    return abb * M[i + 3 * j] + (y1[i] * pb[j] + pb[i] * y1[j]) + (i == j ? dbb : 0.0);
+  });
+  fill_symmetric(out.Ncc, [&](int i, int j) {
+    return acc * M[i + 3 * j] + (y2[i] * pc[j] + pc[i] * y2[j]) + (i == j ? dcc : 0.0);
+  });
+  for (int k = 0; k < 9; ++k) {  // M itself is read no more: Nbc overwrites it
+    const int i = k % 3, j = k / 3;
+    out.Nbc[k] = abc * M[k] + (u[i] * y2[j] + y1[i] * v[j]);
+  }
+}
+
+void TangentTerm::add_contracted_hessian_z(const double* w, double s, double* Z, int ldz) const {
+  // The parts of contraction(), summed on the blocks of z_b and z_c.
+  auto add_upper = [ldz](double* z, const double* A) {  // upper triangle of a diagonal block
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i <= j; ++i) z[i + ldz * j] += A[i + 3 * j];
+  };
+  auto length_q = [](double cL, const double* e, double* Q) {  // cL (I - e e^T)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) Q[i + 3 * j] = cL * ((i == j ? 1.0 : 0.0) - e[i] * e[j]);
+  };
+  double Q[9];
+  if (dir == Dir::Constant) {  // only L varies
+    const double e[3] = {eL_[0], eL_[1], eL_[2]};
+    length_q(s * sigma * dot3(w, uhat_) / L_, e, Q);
+    add_upper(Z + 3 * (q - 1) + ldz * 3 * (q - 1), Q);
+    return;
+  }
+  Contraction parts;
+  contraction(w, s, parts);
+  length_q(parts.cL, parts.e, Q);
+  const double* e = parts.e;
+  double Bbb[9], Bbc[9], Bcc[9];
+  const bool chord = dir == Dir::Chord;
+  for (int k = 0; k < 9; ++k) {
+    Bbb[k] = parts.Nbb[k];
+    Bbc[k] = chord ? parts.Nbb[k] : parts.Nbc[k];
+    Bcc[k] = chord ? parts.Nbb[k] : parts.Ncc[k];
+  }
+  const double* Gb = parts.Gb;
+  const double* Gc = chord ? parts.Gb : parts.Gc;
   // The dL and d2L terms on q's row and column.
   if (q == b) {
     for (int j = 0; j < 3; ++j)

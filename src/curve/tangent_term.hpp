@@ -44,6 +44,22 @@ struct TangentTerm {
   // In X it is D^T Z D, D = dz/dX (Segment does that). Call after jacobian().
   void add_contracted_hessian_z(const double* w, double s, double* Z, int ldz) const;
 
+  // The same contraction s * (w . d2T/dz2) in its parts, for a caller that
+  // assembles them in X itself (Segment, on an interior nodal segment):
+  //   the direction's part on the blocks (b, b), (b, c), (c, c) of z,
+  //     N = Fb^T M Fb, Fb^T M Fc, Fc^T M Fc (+ the weighted cw . d2u~),
+  //     for the chord (Fb = Fc = I) the one matrix M = Nbb = Nbc = Ncc;
+  //   the length's part: e G_x^T on (q, x) and G_x e^T on (x, q) for x = b, c,
+  //     and cL (I - e e^T) on (q, q).
+  // Not for Dir::Constant (its contraction is the length's (q, q) term alone).
+  struct Contraction {
+    double Nbb[9], Nbc[9], Ncc[9];  // 3x3 column-major; chord: Nbb only (= M)
+    double Gb[3], Gc[3];            // sigma Fb^T cw, sigma Fc^T cw (chord: Gb = Gc, Gb only)
+    double cL;                      // s sigma (w . uhat) / L
+    double e[3];                    // the unit chord x_q - x_p
+  };
+  void contraction(const double* w, double s, Contraction& c) const;
+
  private:
   double L_ = 0, eL_[3] = {0, 0, 0};   // element length and unit chord
   double r_ = 0, uhat_[3] = {0, 0, 0}; // |u~| and unit(u)
@@ -52,6 +68,7 @@ struct TangentTerm {
   // while u~ stays O(1) for any mesh size (no overflow at 1e100).
   double k0_ = 1, s1_ = 0, s2_ = 0, w1_[3] = {0, 0, 0}, w2_[3] = {0, 0, 0};
   // d(u~)/dx_s as 3x3 blocks (column-major) for the slots slot_[0..n_slots_)
+  // (Constant and Weighted; jacobian() writes the chord's blocks directly)
   int n_slots_ = 0, slot_[3] = {0, 0, 0};
   double du_[3][9];
 };

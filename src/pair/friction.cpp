@@ -169,7 +169,19 @@ void five_term_pass(int m, const double* __restrict Jx, const double* __restrict
                     const double* __restrict ay, const double* __restrict az,
                     const double* __restrict C0, const double* __restrict C1,
                     double* __restrict Kc) {
-  for (int c = 0; c < m; ++c) {
+  int c = 0;
+  for (; c + 1 < m; c += 2) {  // two columns per pass: each row's values loaded once
+    double* __restrict col0 = Kc + kNdof * c;
+    double* __restrict col1 = col0 + kNdof;
+    const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
+    const double ux = ax[c + 1], uy = ay[c + 1], uz = az[c + 1], d0 = C0[c + 1], d1 = C1[c + 1];
+    for (int r = 0; r < m; ++r) {
+      const double jx = Jx[r], jy = Jy[r], jz = Jz[r], v0 = w0[r], v1 = w1[r];
+      col0[r] = (jx * tx + jy * ty + jz * tz) + (v0 * c0 + v1 * c1);
+      col1[r] = (jx * ux + jy * uy + jz * uz) + (v0 * d0 + v1 * d1);
+    }
+  }
+  if (c < m) {
     double* col = Kc + kNdof * c;
     const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
     for (int r = 0; r < m; ++r)
@@ -194,6 +206,59 @@ void three_term_pass(int m, const double* __restrict Jx, const double* __restric
       col[r + 1] = Jy[r + 1] * ty + (w0[r + 1] * c0 + w1[r + 1] * c1);
       col[r + 2] = Jz[r + 2] * tz + (w0[r + 2] * c0 + w1[r + 2] * c1);
     }
+  }
+}
+
+// The column factors of rows [k0, k1) (one beam's used columns, cc = cols[k]
+// - 12 on B), as the general loop of friction_tangent computes them but row
+// by row on gathered arrays, so that the compiler vectorises them (no
+// surface anchor: jn is the anchor point's jacobian column as it is):
+//   a = A J + Mjn jn + Mpd pd,  pd = this beam's P_,xi column (Mpd = Mta if
+//   the frame tangent is this beam's, else zero),
+//   w0 = b0 - [P_A,xi^T T on A] - J.v_xi,  w1 = b1 + [P_B,eta^T T on B] - J.v_eta,
+// with the same sums in the same order.
+template <bool kOnA>
+void factor_rows(int k0, int k1, const int* cols, const double* Pn, const double* Pd,
+                 const double* A, const double* Mjn, const double* Mpd, const double* T,
+                 const double* v_xi, const double* v_eta, const double* b0v, const double* b1v,
+                 double sb, const Linearization& lin, double* __restrict ax,
+                 double* __restrict ay, double* __restrict az, double* __restrict w0,
+                 double* __restrict w1) {
+  double jn[3][kNdof], pd[3][kNdof];
+  const double sn = kOnA ? 1.0 : -1.0;
+  for (int k = k0; k < k1; ++k) {  // gather: 3 x 12 column-major to rows
+    const int cc = kOnA ? cols[k] : cols[k] - 12;
+    for (int i = 0; i < 3; ++i) {
+      jn[i][k] = sn * Pn[3 * cc + i];
+      pd[i][k] = Pd[3 * cc + i];
+    }
+  }
+  const double* __restrict Jx = lin.Jx;
+  const double* __restrict Jy = lin.Jy;
+  const double* __restrict Jz = lin.Jz;
+  const double* __restrict jx = jn[0];
+  const double* __restrict jy = jn[1];
+  const double* __restrict jz = jn[2];
+  const double* __restrict px = pd[0];
+  const double* __restrict py = pd[1];
+  const double* __restrict pz = pd[2];
+  const double* __restrict b0 = b0v;
+  const double* __restrict b1 = b1v;
+  for (int k = k0; k < k1; ++k) {
+    const double J0 = Jx[k], J1 = Jy[k], J2 = Jz[k];
+    const double n0 = jx[k], n1 = jy[k], n2 = jz[k];
+    const double p0 = px[k], p1 = py[k], p2 = pz[k];
+    ax[k] = ((A[0] * J0 + A[3] * J1 + A[6] * J2) + (Mjn[0] * n0 + Mjn[3] * n1 + Mjn[6] * n2)) +
+            (Mpd[0] * p0 + Mpd[3] * p1 + Mpd[6] * p2);
+    ay[k] = ((A[1] * J0 + A[4] * J1 + A[7] * J2) + (Mjn[1] * n0 + Mjn[4] * n1 + Mjn[7] * n2)) +
+            (Mpd[1] * p0 + Mpd[4] * p1 + Mpd[7] * p2);
+    az[k] = ((A[2] * J0 + A[5] * J1 + A[8] * J2) + (Mjn[2] * n0 + Mjn[5] * n1 + Mjn[8] * n2)) +
+            (Mpd[2] * p0 + Mpd[5] * p1 + Mpd[8] * p2);
+    const double conv = p0 * T[0] + p1 * T[1] + p2 * T[2];
+    const double jxi = J0 * v_xi[0] + J1 * v_xi[1] + J2 * v_xi[2];
+    const double jeta = J0 * v_eta[0] + J1 * v_eta[1] + J2 * v_eta[2];
+    w0[k] = kOnA ? (sb * b0[k] - conv) - jxi : sb * b0[k] - jxi;
+    w1[k] = kOnA ? sb * b1[k] - jeta : (sb * b1[k] + conv) - jeta;
   }
 }
 
@@ -347,6 +412,20 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
   }
   if (axial) {
     three_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, ax, ay, az, lin.C0, lin.C1, Kc);
+    return;
+  }
+  if (!fr.surface) {  // the factors row by row, per beam (factor_rows)
+    int ma = 0;
+    while (ma < m && lin.cols[ma] < 12) ++ma;
+    const double zero[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    const double* b0 = rotating ? lin.B0 : lin.av;
+    const double* b1 = rotating ? lin.B1 : lin.bv;
+    const double sb = rotating ? s : f;
+    factor_rows<true>(0, ma, lin.cols, PAn, PAd, A, Mjn, pd_on_a ? Mta : zero, fr.T, v_xi,
+                      v_eta, b0, b1, sb, lin, ax, ay, az, w0, w1);
+    factor_rows<false>(ma, m, lin.cols, PBn, PBd, A, Mjn, pd_on_b ? Mta : zero, fr.T, v_xi,
+                       v_eta, b0, b1, sb, lin, ax, ay, az, w0, w1);
+    five_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, ax, ay, az, lin.C0, lin.C1, Kc);
     return;
   }
   for (int k = 0; k < m; ++k) {

@@ -31,6 +31,21 @@ void upper_column(int rows, const double* __restrict v0, const double* __restric
     col[r] = v0[r] * a0 + v1[r] * a1 + v2[r] * a2 + v3[r] * a3 + v4[r] * a4;
 }
 
+// Two columns at once (c even and c + 1 share their rows 0..c+1): each
+// row's five values are loaded once for both columns.
+void upper_columns2(int rows, const double* __restrict v0, const double* __restrict v1,
+                    const double* __restrict v2, const double* __restrict v3,
+                    const double* __restrict v4, const double* a, const double* b,
+                    double* __restrict col0, double* __restrict col1) {
+  const double a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], a4 = a[4];
+  const double b0 = b[0], b1 = b[1], b2 = b[2], b3 = b[3], b4 = b[4];
+  for (int r = 0; r < rows; ++r) {
+    const double x0 = v0[r], x1 = v1[r], x2 = v2[r], x3 = v3[r], x4 = v4[r];
+    col0[r] = x0 * a0 + x1 * a1 + x2 * a2 + x3 * a3 + x4 * a4;
+    col1[r] = x0 * b0 + x1 * b1 + x2 * b2 + x3 * b3 + x4 * b4;
+  }
+}
+
 }  // namespace
 
 void normal_tangent_upper(const Linearization& lin, double fp, double f_over_rho, double* Kc) {
@@ -82,7 +97,14 @@ void normal_tangent_upper(const Linearization& lin, double fp, double f_over_rho
     p1[k] = e[0] * Jx[k] + e[1] * Jy[k] + e[2] * Jz[k];
     p2[k] = f[0] * Jx[k] + f[1] * Jy[k] + f[2] * Jz[k];
   }
-  for (int c = 0; c < m; ++c) {
+  int c = 0;
+  for (; c + 1 < m; c += 2) {
+    const double a[5] = {-fp * g[c], sq * p1[c], sq * p2[c], s * lin.C0[c], s * lin.C1[c]};
+    const double b[5] = {-fp * g[c + 1], sq * p1[c + 1], sq * p2[c + 1], s * lin.C0[c + 1],
+                         s * lin.C1[c + 1]};
+    upper_columns2(c + 2, g, p1, p2, B0, B1, a, b, Kc + kNdof * c, Kc + kNdof * (c + 1));
+  }
+  if (c < m) {
     const double a0 = -fp * g[c], a1 = sq * p1[c], a2 = sq * p2[c], a3 = s * lin.C0[c],
                  a4 = s * lin.C1[c];
     upper_column(upper_rows(c, m), g, p1, p2, B0, B1, a0, a1, a2, a3, a4, Kc + kNdof * c);
