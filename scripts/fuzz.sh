@@ -48,8 +48,17 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-all_targets=(fuzz_segment_eval fuzz_pair_eval fuzz_handover fuzz_model_update fuzz_model_restore
-  fuzz_model_calls fuzz_pair_line)
+# Every target of tests/fuzz/CMakeLists.txt (B2B_FUZZ_TARGETS), read from
+# there so that a new target cannot be built and never run; each must have
+# its corpus directory.
+read -r -a all_targets <<<"$(sed -n '/^set(B2B_FUZZ_TARGETS/,/)/p' tests/fuzz/CMakeLists.txt |
+  sed 's/^set(B2B_FUZZ_TARGETS//; s/)//' | tr '\n' ' ')"
+for t in "${all_targets[@]}"; do
+  [ -d "tests/fuzz/corpus/$t" ] || {
+    echo "fuzz: target $t has no corpus directory tests/fuzz/corpus/$t" >&2
+    exit 1
+  }
+done
 read -r -a targets <<<"${FUZZ_TARGETS:-${all_targets[*]}}"
 jobs=$(nproc)
 # OpenMP off: the model's threads would only make runs less reproducible (a
