@@ -113,7 +113,10 @@ case "$mode" in
   test)
     cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
     cmake --build build -j "$jobs"
-    ctest --test-dir build --output-on-failure -j "$jobs"
+    # Label large (the MPI example's 10^5-segment network, minutes per run,
+    # registered when MPI and PETSc are found): on demand only, as
+    # scripts/mpi_example.sh large runs it.
+    ctest --test-dir build --output-on-failure -j "$jobs" -LE large
     ;;
   sanitize)
     # -O2 -g, not a -O0 Debug build: AddressSanitizer's and UBSan's checks
@@ -142,7 +145,7 @@ case "$mode" in
     #    (scripts/quickstart.sh coverage checks it).
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      ctest --test-dir build-sanitize --output-on-failure -j "$jobs" \
+      ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE large \
       -E '^(demo_trade_table_short|demo_contact_tangent_many_contacts)$'
     ;;
   abi)
