@@ -133,8 +133,13 @@ case "$mode" in
       "-DCMAKE_Fortran_FLAGS_DEBUG=-O2 -g"
     cmake --build build-sanitize -j "$jobs"
     # Any finding aborts the test that made it (-fno-sanitize-recover), so a
-    # green run means zero findings. Not run here, since they run in the test
-    # step and every library path they take runs here in other tests:
+    # green run means zero findings. Not run here: the MPI example (labels
+    # mpi and large, registered when MPI and PETSc are found), since
+    # LeakSanitizer reports Open MPI's own allocations (ompi_op_base_op_select
+    # and its plugins) as leaks, so that mpi_slide_np1 fails here without a
+    # finding in b2b; how the example is checked is the coming mpi step's.
+    # And, since they run in the test step and every library path they take
+    # runs here in other tests:
     #  - demo_trade_table_short: 16 solves of the demo host's scenes, which
     #    the scene tests run;
     #  - demo_contact_tangent_many_contacts: finite differences of the host's
@@ -145,7 +150,7 @@ case "$mode" in
     #    (scripts/quickstart.sh coverage checks it).
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE large \
+      ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE 'large|mpi' \
       -E '^(demo_trade_table_short|demo_contact_tangent_many_contacts)$'
     ;;
   abi)
