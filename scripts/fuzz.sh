@@ -3,7 +3,7 @@
 # and runs them one after the other, on the seed corpora of
 # tests/fuzz/corpus/<target>/ (which also hold the reproducers of every
 # defect found: each is run first, so a regression fails at once):
-#   short            each target for 60 s (FUZZ_SECONDS overrides), as many
+#   short            each target for 30 s (FUZZ_SECONDS overrides), as many
 #                    at a time as there are cores (FUZZ_PARALLEL overrides):
 #                    the CI step; exits 1 if any target crashes or breaks the
 #                    contract (the input is kept in build-fuzz/artifacts/)
@@ -23,7 +23,7 @@ cd "$(dirname "$0")/.."
 
 mode=${1:-}
 case "$mode" in
-  short) seconds=${FUZZ_SECONDS:-60} ;;
+  short) seconds=${FUZZ_SECONDS:-30} ;;
   long) seconds=${2:-900} ;;
   *)
     echo "usage: $0 short | long [seconds per target]" >&2
@@ -48,8 +48,17 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-all_targets=(fuzz_segment_eval fuzz_pair_eval fuzz_handover fuzz_model_update fuzz_model_restore
-  fuzz_model_calls fuzz_pair_line)
+# Every target of tests/fuzz/CMakeLists.txt (B2B_FUZZ_TARGETS), read from
+# there so that a new target cannot be built and never run; each must have
+# its corpus directory.
+read -r -a all_targets <<<"$(sed -n '/^set(B2B_FUZZ_TARGETS/,/)/p' tests/fuzz/CMakeLists.txt |
+  sed 's/^set(B2B_FUZZ_TARGETS//; s/)//' | tr '\n' ' ')"
+for t in "${all_targets[@]}"; do
+  [ -d "tests/fuzz/corpus/$t" ] || {
+    echo "fuzz: target $t has no corpus directory tests/fuzz/corpus/$t" >&2
+    exit 1
+  }
+done
 read -r -a targets <<<"${FUZZ_TARGETS:-${all_targets[*]}}"
 jobs=$(nproc)
 # OpenMP off: the model's threads would only make runs less reproducible (a
