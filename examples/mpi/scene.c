@@ -138,8 +138,7 @@ int scene_network(scene *sc, int n_layers, int n_fibres, int n_seg, unsigned see
    * (the normal penalty) the stick limit mu f_N / eps_t is ~2e-7, so they
    * slip by a few micro-units in directions that each Newton correction
    * (~1e-4) turned over: Newton alternated between two states (period 2,
-   * |F| constant, the Jacobian matching finite differences) at every step
-   * size down to 1/128 of the load. With eps_t = 20 the stick limit is
+   * |F| constant) at every step size down to 1/128 of the load. With eps_t = 20 the stick limit is
    * ~2e-5, and Newton converges as without friction (README, "Friction"). */
   sc->mu = 0.1;
   sc->eps_t = 20.0;
