@@ -34,6 +34,10 @@ int contact_host_build(contact_host *ch, MPI_Comm comm, const scene *sc, const p
   if ((st = b2b_model_create(&ch->model, msg, msg_len))) return st;
   /* one thread per rank: the ranks share the machine's cores */
   if ((st = b2b_model_set_int(ch->model, "threads", 1, msg, msg_len))) return st;
+  /* the same search margin on every rank (doc/distributed.md, section 3):
+   * the default, the largest radius of the model's beams, could differ */
+  if ((st = b2b_model_set_real(ch->model, "search_margin", sc->search_margin, msg, msg_len)))
+    return st;
   /* global node -> local node */
   int *local = malloc(sizeof(int) * (size_t)sc->n_nodes);
   int *nodes = malloc(sizeof(int) * (size_t)(sc->n_nodes + 1));

@@ -9,6 +9,7 @@
 
 #include "contact_host.h"
 #include "ghost_exchange.h"
+#include "jacobian_pattern.h"
 
 typedef struct {
   MPI_Comm comm;
@@ -33,11 +34,15 @@ typedef struct {
   char msg[B2B_ERRMSG_LEN];
   /* measurements, totals since setup */
   int64_t residuals, jacobians, newton_its;
-  int64_t res_offproc, jac_offproc, jac_entries; /* off-process entries sent in assembly */
+  int64_t res_offproc;             /* residual entries sent to other ranks in assembly */
+  int64_t jac_offproc, jac_blocks; /* Jacobian 3 x 3 blocks: in other ranks' rows, all */
   double time_update, time_assembly, time_solve;
   int64_t preallocations;
-  PetscInt *coo_i, *coo_j; /* the last COO pattern */
-  PetscCount coo_n;
+  /* the Jacobian: its grown-only pattern (jacobian_pattern.h) */
+  jac_pattern jp;
+  int *block, *row_lo, *row_hi; /* local node: global block row, its owner's rows */
+  char mat_type[64];            /* -host_mat_type: baij (default) or aij */
+  int fresh;                    /* the matrix has not been assembled yet */
 } fe_host;
 
 /* Builds everything for part pp: maps, the ghost exchange, b2b's model. Collective. */

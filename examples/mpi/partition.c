@@ -80,7 +80,7 @@ int partition_rcb(const scene *sc, int n_parts, partition *pt) {
 }
 
 double partition_reach(const scene *sc) {
-  return 2 * sc->radius + sc->reg_gap + sc->radius + sc->motion_margin;
+  return 2 * sc->radius + sc->reg_gap + sc->search_margin + sc->motion_margin;
 }
 
 /* The box of segment s of beam b: the nodes of its Hermite patch (s-1 .. s+2). */

@@ -23,7 +23,7 @@ void partition_free(partition *pt);
 /* The contact reach of the ghost layer: two segments whose boxes (their
  * Hermite patches' nodes, reference configuration) lie within it of each
  * other may come into b2b's narrow phase during the run: r_A + r_B + the
- * regularization gap + b2b's search margin (its default, the radius) + the
+ * regularization gap + b2b's search margin (the scene's, set on every model) + the
  * scene's motion margin. */
 double partition_reach(const scene *sc);
 

@@ -24,6 +24,7 @@ typedef struct {
   /* contact (b2b_params): quadratic law */
   double penalty, reg_gap, mu, eps_t;
   double motion_margin; /* the most any two segments approach over the run (ghost layer) */
+  double search_margin; /* b2b's "search_margin" on every rank's model (the same everywhere) */
   /* load path over t in [0, t_end] (scene_load) */
   double t_end;
   int n_steps;       /* nominal load steps */
