@@ -29,6 +29,8 @@
 #              installs, and the consumer and README-snippet tests link it
 #   fuzz       the libFuzzer targets (tests/fuzz, clang, ASan+UBSan) for a
 #              bounded time each (scripts/fuzz.sh short)
+#   mpi        the MPI/PETSc example host on 1 and 2 ranks
+#              (scripts/mpi_example.sh: build-mpi/; petsc-dev, Open MPI)
 # and, not in CI:
 #   coverage   checks by gcov that the tests memcheck and sanitize leave out
 #              reach no library line that the tests they run do not
@@ -40,9 +42,9 @@ cd "$(dirname "$0")/.."
 
 mode=${1:-}
 case "$mode" in
-  demo | study | test | sanitize | abi | tsan | clang | memcheck | conly | static | doc | fuzz | coverage) ;;
+  demo | study | test | sanitize | abi | tsan | clang | memcheck | conly | static | doc | fuzz | mpi | coverage) ;;
   *)
-    echo "usage: $0 demo|study|test|sanitize|abi|memcheck|tsan|clang|conly|doc|static|fuzz|coverage" >&2
+    echo "usage: $0 demo|study|test|sanitize|abi|memcheck|tsan|clang|conly|doc|static|fuzz|mpi|coverage" >&2
     exit 2
     ;;
 esac
@@ -311,6 +313,15 @@ case "$mode" in
     # cited_paths (label docs) reads the sources only: the test step ran it.
     ctest --test-dir build-pkg-static --output-on-failure -j "$jobs" -L 'consumer|docs' \
       -E '^cited_paths$'
+    ;;
+  mpi)
+    # The MPI/PETSc example host (examples/mpi, doc/distributed.md):
+    # scripts/mpi_example.sh installs petsc-dev and Open MPI, builds
+    # build-mpi/ with -DB2B_ENABLE_MPI_EXAMPLE=ON and runs ctest -L mpi: the
+    # host's element against finite differences, the slide and the fibre
+    # networks (4800 and 10^5 segments) on 1 and 2 ranks, each pair of runs
+    # compared (the same contacts, every value within 1e-10 relative).
+    scripts/mpi_example.sh
     ;;
   fuzz)
     # The libFuzzer targets of tests/fuzz for a bounded time each, on their
