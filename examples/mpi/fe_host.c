@@ -77,6 +77,7 @@ void fe_host_free(fe_host *h) {
   contact_host_free(&h->ch);
   ghost_exchange_free(&h->gx);
   jac_pattern_free(&h->jp);
+  PetscFree2(h->coo_i, h->coo_j);
   free(h->block);
   free(h->row_lo);
   free(h->row_hi);
@@ -254,11 +255,9 @@ static int contact_key(fe_host *h, int k, int nodes[8], int64_t *key) {
  * holds every contact pair active at some Jacobian of the run
  * (jacobian_pattern.h): a new matrix only when a pair closes for the first
  * time on some rank, else the same pattern zeroed and filled again. */
-static PetscErrorCode form_jacobian(SNES snes, Vec U, Mat J, Mat Pmat, void *ctx) {
-  fe_host *h = ctx;
-  (void)J;
-  /* the Jacobian is wanted at the last residual's point (basic line search);
-   * if not, update there first (collectively) */
+/* The Jacobian is wanted at the last residual's point (basic line search);
+ * if not, update there first (collectively). */
+static PetscErrorCode update_at(SNES snes, Vec U, fe_host *h) {
   const PetscScalar *a;
   int same = h->have_update;
   PetscCall(VecGetArrayRead(U, &a));
@@ -273,6 +272,13 @@ static PetscErrorCode form_jacobian(SNES snes, Vec U, Mat J, Mat Pmat, void *ctx
     PetscCall(VecDestroy(&F));
     if (!h->have_update) SETERRQ(h->comm, PETSC_ERR_LIB, "update failed at the Jacobian's point");
   }
+  return 0;
+}
+
+static PetscErrorCode form_jacobian(SNES snes, Vec U, Mat J, Mat Pmat, void *ctx) {
+  fe_host *h = ctx;
+  (void)J;
+  PetscCall(update_at(snes, U, h));
   const double t0 = MPI_Wtime();
   int nc = 0;
   if (b2b_model_contact_count(h->ch.model, &nc, h->msg, sizeof h->msg))
@@ -330,6 +336,100 @@ static PetscErrorCode form_jacobian(SNES snes, Vec U, Mat J, Mat Pmat, void *ctx
     PetscCall(MatSetOption(Pmat, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE));
     h->fresh = 0;
   }
+  h->jacobians++;
+  h->time_assembly += MPI_Wtime() - t0;
+  return 0;
+}
+
+/* -jacobian coo: the Jacobian as COO entries, the host's elements' and b2b's
+ * (b2b_model_tangent_coo, in the host's global equation numbers), given to
+ * PETSc by MatSetPreallocationCOO / MatSetValuesCOO; repeated entries sum.
+ * The pattern changes as contacts close, open and slide: a new
+ * preallocation when it did on some rank (PETSc then sorts all entries
+ * again, the cost that made the block pattern the default at 10^5
+ * segments; examples/mpi/README.md), else only the values. */
+typedef struct {
+  PetscInt *i, *j;
+  PetscScalar *v;
+  PetscCount n;
+} coo_entries;
+
+static void count_coo(fe_host *h, const int *nodes, int n, const double *g, const double *H,
+                      void *data) {
+  (void)h, (void)nodes, (void)g, (void)H;
+  *(PetscCount *)data += n == 1 ? 3 : (PetscCount)9 * n * n; /* anchors: the diagonal */
+}
+
+static void emit_coo(fe_host *h, const int *nodes, int n, const double *g, const double *H,
+                     void *data) {
+  (void)g;
+  coo_entries *c = data;
+  const int m = 3 * n;
+  for (int a = 0; a < m; ++a)
+    for (int b = 0; b < m; ++b) {
+      if (n == 1 && a != b) continue;
+      c->i[c->n] = h->gdof[3 * nodes[a / 3] + a % 3];
+      c->j[c->n] = h->gdof[3 * nodes[b / 3] + b % 3];
+      c->v[c->n] = H[m * a + b];
+      c->n++;
+    }
+  count_blocks(h, nodes, n);
+}
+
+static PetscErrorCode form_jacobian_coo(SNES snes, Vec U, Mat J, Mat Pmat, void *ctx) {
+  fe_host *h = ctx;
+  (void)J;
+  PetscCall(update_at(snes, U, h));
+  const double t0 = MPI_Wtime();
+  const int N3 = 3 * h->sc->n_nodes;
+  PetscCount n_host = 0;
+  host_elements(h, count_coo, &n_host, 0);
+  int nnz_b2b = 0;
+  if (b2b_model_tangent_coo(h->ch.model, h->eq_global, 3, 0, N3, &nnz_b2b, NULL, NULL, NULL, 0,
+                            h->msg, sizeof h->msg))
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "b2b_model_tangent_coo: %s", h->msg);
+  const PetscCount cap = n_host + nnz_b2b;
+  coo_entries c = {NULL, NULL, NULL, 0};
+  PetscCall(PetscMalloc3(cap, &c.i, cap, &c.j, cap, &c.v));
+  host_elements(h, emit_coo, &c, 1);
+  int *ri = malloc(sizeof(int) * (size_t)(nnz_b2b + 1));
+  int *ci = malloc(sizeof(int) * (size_t)(nnz_b2b + 1));
+  if (!ri || !ci) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_MEM, "out of memory");
+  int got = 0;
+  if (b2b_model_tangent_coo(h->ch.model, h->eq_global, 3, 0, N3, &got, ri, ci, c.v + c.n,
+                            nnz_b2b, h->msg, sizeof h->msg))
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "b2b_model_tangent_coo: %s", h->msg);
+  for (int e = 0; e < got; ++e) {
+    c.i[c.n + e] = ri[e];
+    c.j[c.n + e] = ci[e];
+  }
+  c.n += got;
+  free(ri);
+  free(ci);
+  const int same = h->coo_i && h->coo_n == c.n &&
+                   memcmp(h->coo_i, c.i, sizeof(PetscInt) * (size_t)c.n) == 0 &&
+                   memcmp(h->coo_j, c.j, sizeof(PetscInt) * (size_t)c.n) == 0;
+  int all_same = 0;
+  MPI_Allreduce(&same, &all_same, 1, MPI_INT, MPI_MIN, h->comm);
+  if (!all_same) {
+    PetscCall(PetscFree2(h->coo_i, h->coo_j));
+    PetscCall(PetscMalloc2(c.n, &h->coo_i, c.n, &h->coo_j));
+    PetscCall(PetscArraycpy(h->coo_i, c.i, c.n));
+    PetscCall(PetscArraycpy(h->coo_j, c.j, c.n));
+    h->coo_n = c.n;
+    PetscCall(MatSetPreallocationCOO(Pmat, c.n, c.i, c.j));
+    /* PETSc 3.18 does not see a new COO preallocation as a new pattern: a
+     * factorization would reuse its old symbolic setup. A reset makes the
+     * next solve set up afresh. */
+    KSP ksp;
+    PC pc;
+    PetscCall(SNESGetKSP(snes, &ksp));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCReset(pc));
+    h->preallocations++;
+  }
+  PetscCall(MatSetValuesCOO(Pmat, c.v, INSERT_VALUES));
+  PetscCall(PetscFree3(c.i, c.j, c.v));
   h->jacobians++;
   h->time_assembly += MPI_Wtime() - t0;
   return 0;
@@ -404,14 +504,28 @@ int fe_host_solve(fe_host *h, Vec U, step_report report, void *data) {
   }
   PetscStrncpy(h->mat_type, MATBAIJ, sizeof h->mat_type);
   PetscOptionsGetString(NULL, NULL, "-host_mat_type", h->mat_type, sizeof h->mat_type, NULL);
-  if (jac_pattern_matrix(&h->jp, h->mat_type, &J)) return 1;
+  char jacobian[16] = "block";
+  PetscOptionsGetString(NULL, NULL, "-jacobian", jacobian, sizeof jacobian, NULL);
+  h->use_coo = strcmp(jacobian, "coo") == 0;
+  if (!h->use_coo && strcmp(jacobian, "block") != 0) {
+    PetscPrintf(h->comm, "-jacobian %s: expected block or coo\n", jacobian);
+    return 1;
+  }
+  if (h->use_coo) {
+    const PetscInt n_own = 3 * (PetscInt)(h->node_offset[h->rank + 1] - h->node_offset[h->rank]);
+    MatCreate(h->comm, &J);
+    MatSetSizes(J, n_own, n_own, 3 * (PetscInt)sc->n_nodes, 3 * (PetscInt)sc->n_nodes);
+    MatSetType(J, MATAIJ);
+  } else if (jac_pattern_matrix(&h->jp, h->mat_type, &J)) {
+    return 1;
+  }
   h->fresh = 1;
   SNESCreate(h->comm, &snes);
   SNESSetType(snes, SNESNEWTONLS);
   SNESGetLineSearch(snes, &ls);
   SNESLineSearchSetType(ls, SNESLINESEARCHBASIC);
   SNESSetFunction(snes, F, form_residual, h);
-  SNESSetJacobian(snes, J, J, form_jacobian, h);
+  SNESSetJacobian(snes, J, J, h->use_coo ? form_jacobian_coo : form_jacobian, h);
   SNESSetConvergenceTest(snes, converged_test, h, NULL);
   SNESSetTolerances(snes, 0.0, 0.0, 0.0, h->max_it + 1, 1000000);
   SNESGetKSP(snes, &ksp);

@@ -43,6 +43,12 @@ typedef struct {
   int *block, *row_lo, *row_hi; /* local node: global block row, its owner's rows */
   char mat_type[64];            /* -host_mat_type: baij (default) or aij */
   int fresh;                    /* the matrix has not been assembled yet */
+  /* -jacobian coo: the Jacobian as COO entries (the host's elements and
+   * b2b_model_tangent_coo), through MatSetPreallocationCOO/MatSetValuesCOO;
+   * the last preallocated pattern */
+  int use_coo;
+  PetscInt *coo_i, *coo_j;
+  PetscCount coo_n;
 } fe_host;
 
 /* Builds everything for part pp: maps, the ghost exchange, b2b's model. Collective. */

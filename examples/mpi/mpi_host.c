@@ -7,7 +7,7 @@
  *   mpi_host -scene slide|network [-layers L -fibres F -segments S]
  *            [-out FILE] [-verbose] [-verbose_level N] [-scaling]
  *            [-mu MU -eps_t EPS -strain S -steps N -search_margin S]
- *            [-host_mat_type baij|aij] [PETSc options]
+ *            [-host_mat_type baij|aij] [-jacobian block|coo] [PETSc options]
  *
  * slide:   a slider pressed onto two base beams and dragged along them with
  *          friction across the 2-rank cut; prints the friction force
