@@ -255,6 +255,17 @@ static int contact_key(fe_host *h, int k, int nodes[8], int64_t *key) {
  * holds every contact pair active at some Jacobian of the run
  * (jacobian_pattern.h): a new matrix only when a pair closes for the first
  * time on some rank, else the same pattern zeroed and filled again. */
+/* After a new matrix pattern: the next solve sets its preconditioner up
+ * afresh (a factorization would reuse its old symbolic setup). */
+static PetscErrorCode reset_preconditioner(SNES snes) {
+  KSP ksp;
+  PC pc;
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCReset(pc));
+  return 0;
+}
+
 /* The Jacobian is wanted at the last residual's point (basic line search);
  * if not, update there first (collectively). */
 static PetscErrorCode update_at(SNES snes, Vec U, fe_host *h) {
@@ -302,11 +313,7 @@ static PetscErrorCode form_jacobian(SNES snes, Vec U, Mat J, Mat Pmat, void *ctx
     PetscCall(jac_pattern_matrix(&h->jp, h->mat_type, &Jnew));
     PetscCall(MatHeaderReplace(Pmat, &Jnew));
     /* a new pattern: the preconditioner's factorization is set up afresh */
-    KSP ksp;
-    PC pc;
-    PetscCall(SNESGetKSP(snes, &ksp));
-    PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(PCReset(pc));
+    PetscCall(reset_preconditioner(snes));
     h->preallocations++;
     h->fresh = 1;
   } else if (!h->fresh) {
@@ -419,13 +426,8 @@ static PetscErrorCode form_jacobian_coo(SNES snes, Vec U, Mat J, Mat Pmat, void 
     h->coo_n = c.n;
     PetscCall(MatSetPreallocationCOO(Pmat, c.n, c.i, c.j));
     /* PETSc 3.18 does not see a new COO preallocation as a new pattern: a
-     * factorization would reuse its old symbolic setup. A reset makes the
-     * next solve set up afresh. */
-    KSP ksp;
-    PC pc;
-    PetscCall(SNESGetKSP(snes, &ksp));
-    PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(PCReset(pc));
+     * factorization would reuse its old symbolic setup. */
+    PetscCall(reset_preconditioner(snes));
     h->preallocations++;
   }
   PetscCall(MatSetValuesCOO(Pmat, c.v, INSERT_VALUES));
