@@ -128,6 +128,9 @@ program ftest_model_partition
                  .and. all(target_f == -7), 'info k = 2: ' // trim(msg))
       call b2b_model_migration_pack(fm(1), 1, buf_f(1:4), ierr, msg)
       call check(ierr == B2B_ERR_SIZE, 'pack into 4 bytes: ' // trim(msg))
+      ! (a main program's allocatables are not freed at its end: LeakSanitizer
+      ! reports them)
+      deallocate(buf_f, buf_c)
       ! rank 2 again, with the contact
       call b2b_model_update(fm(2), x)
       call check(c_model_update(cm(2), c_loc(x), 3_c_int, int(nn, c_int), 1_c_int, c_null_ptr, &
