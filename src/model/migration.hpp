@@ -82,8 +82,8 @@ Migrant make_migrant(const BeamTable& table, const Partition& part, int sa, int 
                      const Migration::Received* from, int a, int b, int hops, int ga, int gb,
                      const double* hist, int hist_len);
 
-// The committed state an update reads (update.cpp: near_pairs and
-// handovers): the model's own, or, with received contacts, a copy with each
+// The committed state an update reads (update.cpp: the evaluation's work
+// items and the handovers): the model's own, or, with received contacts, a copy with each
 // received contact as the active contact of its target pair (unless the
 // target holds its own active contact; of two received for one target, the
 // one of the smaller source).
