@@ -109,8 +109,7 @@ const SegmentCache::Entry* SegmentCache::get(int s, const Entry* keep, const Seg
   Entry& e = way[victim];
   e.segment = -1;
   gather_patch(info, coords, used_index, e.X);
-  static const double kNoTangents[6] = {0, 0, 0, 0, 0, 0};  // the model uses no TANGENT rule
-  fail = e.built.build(info.kind, info.start_rule, info.end_rule, e.X, kNoTangents, true);
+  fail = build_segment_from_patch(info, e.X, e.built, true);
   if (fail.status) return nullptr;
   e.segment = s;
   recent_[set] = static_cast<uint8_t>(victim);

@@ -19,13 +19,19 @@ void gather_patch(const SegmentInfo& s, const double* coords, const NodeIndex& u
   }
 }
 
+const double kNoHostTangents[6] = {0, 0, 0, 0, 0, 0};
+
+curve::Failure build_segment_from_patch(const SegmentInfo& s, const double X[12],
+                                        curve::Segment& seg, bool derivatives) {
+  return seg.build(s.kind, s.start_rule, s.end_rule, X, kNoHostTangents, derivatives);
+}
+
 curve::Failure build_segment(const SegmentInfo& s, const double* coords,
                              const NodeIndex& used_index, curve::Segment& seg,
                              bool derivatives) {
   double X[12];
   gather_patch(s, coords, used_index, X);
-  static const double kNoTangents[6] = {0, 0, 0, 0, 0, 0};  // the model uses no TANGENT rule
-  return seg.build(s.kind, s.start_rule, s.end_rule, X, kNoTangents, derivatives);
+  return build_segment_from_patch(s, X, seg, derivatives);
 }
 
 Box segment_box(const SegmentInfo& s, const double* coords, const NodeIndex& used_index) {

@@ -16,6 +16,14 @@ namespace model {
 void gather_patch(const SegmentInfo& s, const double* coords, const NodeIndex& used_index,
                   double X[12]);
 
+// The unit host end tangents the model hands on where a kind's rule would
+// read them: none, the model uses no B2B_END_TANGENT rule.
+extern const double kNoHostTangents[6];
+
+// Segment s built from its patch X (gather_patch).
+curve::Failure build_segment_from_patch(const SegmentInfo& s, const double X[12],
+                                        curve::Segment& seg, bool derivatives);
+
 curve::Failure build_segment(const SegmentInfo& s, const double* coords,
                              const NodeIndex& used_index, curve::Segment& seg,
                              bool derivatives);

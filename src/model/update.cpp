@@ -422,9 +422,8 @@ bool Updater::work_item(size_t k, Item& it, bool* is_near) const {
 
 pair::SegmentRef Updater::ref(int s, const SegmentCache::Entry& e) const {
   const SegmentInfo& info = m_.table_.segment(s);
-  static const double kNoTangents[6] = {0, 0, 0, 0, 0, 0};
   return pair::SegmentRef{&e.built, info.kind, info.start_rule, info.end_rule, info.radius,
-                          e.X,      kNoTangents};
+                          e.X,      kNoHostTangents};
 }
 
 // Which nodes of segment s may hold an end contact (end_contact.hpp): its

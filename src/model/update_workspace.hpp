@@ -10,6 +10,8 @@
 #include <iterator>
 #include <vector>
 
+#include <b2b/b2b.h>
+
 #include "contact_state.hpp"
 #include "crossing.hpp"
 #include "search.hpp"
@@ -41,7 +43,7 @@ struct UpdateItem {
 struct UpdateChunk {
   std::vector<UpdateItem> kept;  // in work-item order
   size_t kept_candidates = 0;    // of them, from candidates (the rest: extras)
-  int counts[16] = {0};          // B2B_COUNT_*: the pairs it evaluated and did not keep
+  int counts[B2B_MODEL_COUNTS_LEN] = {0};  // B2B_COUNT_*: evaluated, not kept
   int evaluated = 0, near = 0;
   int bad_segment = -1;  // the lowest segment that could not be built (-1: none)
   curve::Failure fail;   // and why
