@@ -36,17 +36,7 @@ esac
 # the project's CMake configuration needs them (the targets do not).
 packages=(cmake make g++ gfortran pkg-config liblapack-dev libboost-dev clang libclang-rt-14-dev)
 [ "$mode" = long ] && packages+=(llvm-14)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "fuzz: installing missing Debian packages: ${missing[*]}"
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo=sudo
-  $sudo apt-get update -q
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+scripts/install_packages.sh fuzz "${packages[@]}"
 
 # Every target of tests/fuzz/CMakeLists.txt (B2B_FUZZ_TARGETS), read from
 # there so that a new target cannot be built and never run; each must have
