@@ -30,7 +30,7 @@
 #   fuzz       the libFuzzer targets (tests/fuzz, clang, ASan+UBSan) for a
 #              bounded time each (scripts/fuzz.sh short)
 #   mpi        the MPI/PETSc example host on 1 and 2 ranks
-#              (scripts/mpi_example.sh: build-mpi/; petsc-dev, Open MPI)
+#              (scripts/mpi_example.sh quick, in build/; petsc-dev, Open MPI)
 # and, not in CI:
 #   coverage   checks by gcov that the tests memcheck and sanitize leave out
 #              reach no library line that the tests they run do not
@@ -57,17 +57,7 @@ case "$mode" in
   clang) packages+=(clang) ;;
   doc) packages+=(doxygen) ;;
 esac
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "quickstart: installing missing Debian packages: ${missing[*]}"
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo=sudo
-  $sudo apt-get update -q
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+scripts/install_packages.sh quickstart "${packages[@]}"
 
 jobs=$(nproc)
 
@@ -117,7 +107,7 @@ case "$mode" in
     cmake --build build -j "$jobs"
     # Label large (the MPI example's 10^5-segment network, minutes per run,
     # registered when MPI and PETSc are found): on demand only, as
-    # scripts/mpi_example.sh large runs it.
+    # scripts/mpi_example.sh (without "quick") runs it.
     ctest --test-dir build --output-on-failure -j "$jobs" -LE large
     ;;
   sanitize)
@@ -127,19 +117,24 @@ case "$mode" in
     # run faster. Their time is in the host's instrumented Fortran, not in
     # the library: build-sanitize/examples/demo/b2b_demo on
     # tunnel_bar_linear.nml took 38 s of CPU at -O1, 28 s at -O2, and 28 s
-    # too with the Release libb2b.so in its place (4.7 s all Release). Debug
+    # too with the Release libb2b.so in its place (4.7 s all Release); three
+    # quarters of it in the host's hyperdual arithmetic, which is therefore
+    # not instrumented (examples/demo/CMakeLists.txt says why): 11 s. Debug
     # stays the build type, so no NDEBUG (the library has no assert(); the
     # tests may).
+    # -g1: line tables, all a finding's stack trace needs (file, line,
+    # function), and a tenth of the compile time less than -g. The MPI
+    # example is not built: its tests do not run here (below).
     cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DB2B_SANITIZE=ON \
-      "-DCMAKE_C_FLAGS_DEBUG=-O2 -g" "-DCMAKE_CXX_FLAGS_DEBUG=-O2 -g" \
-      "-DCMAKE_Fortran_FLAGS_DEBUG=-O2 -g"
+      "-DCMAKE_C_FLAGS_DEBUG=-O2 -g1" "-DCMAKE_CXX_FLAGS_DEBUG=-O2 -g1" \
+      "-DCMAKE_Fortran_FLAGS_DEBUG=-O2 -g1" -DB2B_ENABLE_MPI_EXAMPLE=OFF
     cmake --build build-sanitize -j "$jobs"
     # Any finding aborts the test that made it (-fno-sanitize-recover), so a
     # green run means zero findings. Not run here: the MPI example (labels
     # mpi and large, registered when MPI and PETSc are found), since
     # LeakSanitizer reports Open MPI's own allocations (ompi_op_base_op_select
     # and its plugins) as leaks, so that mpi_slide_np1 fails here without a
-    # finding in b2b; how the example is checked is the coming mpi step's.
+    # finding in b2b; the mpi step runs the example.
     # And, since they run in the test step and every library path they take
     # runs here in other tests:
     #  - demo_trade_table_short: 16 solves of the demo host's scenes, which
@@ -316,12 +311,16 @@ case "$mode" in
     ;;
   mpi)
     # The MPI/PETSc example host (examples/mpi, doc/distributed.md):
-    # scripts/mpi_example.sh installs petsc-dev and Open MPI, builds
-    # build-mpi/ with -DB2B_ENABLE_MPI_EXAMPLE=ON and runs ctest -L mpi: the
-    # host's element against finite differences, the slide and the fibre
-    # networks (4800 and 10^5 segments) on 1 and 2 ranks, each pair of runs
-    # compared (the same contacts, every value within 1e-10 relative).
-    scripts/mpi_example.sh
+    # scripts/mpi_example.sh installs petsc-dev and Open MPI, switches the
+    # example on in the test step's build/ (Release: its libb2b is built
+    # already when test ran first, as in CI) and runs ctest -L mpi -LE
+    # large: the host's element against finite differences, the slide and
+    # the fibre network of 4800 segments on 1 and 2 ranks (block and COO
+    # Jacobians), each pair of runs compared (the same contacts, every value
+    # within 1e-10 relative). The 10^5-segment network (label large, about
+    # five minutes on 1 and 2 ranks) is the bounded run's full form:
+    # scripts/mpi_example.sh runs it.
+    MPI_BUILD_DIR=build scripts/mpi_example.sh quick
     ;;
   fuzz)
     # The libFuzzer targets of tests/fuzz for a bounded time each, on their
