@@ -162,19 +162,23 @@ void cross_matrix3(double a, double b, const double* w, double* M) {
 }
 
 // Kc = J^T a + w0 C0^T + w1 C1^T on the m x m used block (the five
-// products of friction_tangent); restrict: the compiler vectorises the rows.
-void five_term_pass(int m, const double* __restrict Jx, const double* __restrict Jy,
+// products of friction_tangent; a is 3 x m column-major); restrict: the
+// compiler vectorises the rows. kM: m as a constant (0: read m_), which
+// spares the loops their run-time set-up where every column is used.
+template <int kM>
+void five_term_pass(int m_, const double* __restrict Jx, const double* __restrict Jy,
                     const double* __restrict Jz, const double* __restrict w0,
-                    const double* __restrict w1, const double* __restrict ax,
-                    const double* __restrict ay, const double* __restrict az,
+                    const double* __restrict w1, const double* __restrict a,
                     const double* __restrict C0, const double* __restrict C1,
                     double* __restrict Kc) {
+  const int m = kM ? kM : m_;
   int c = 0;
   for (; c + 1 < m; c += 2) {  // two columns per pass: each row's values loaded once
     double* __restrict col0 = Kc + kNdof * c;
     double* __restrict col1 = col0 + kNdof;
-    const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
-    const double ux = ax[c + 1], uy = ay[c + 1], uz = az[c + 1], d0 = C0[c + 1], d1 = C1[c + 1];
+    const double tx = a[3 * c], ty = a[3 * c + 1], tz = a[3 * c + 2], c0 = C0[c], c1 = C1[c];
+    const double ux = a[3 * c + 3], uy = a[3 * c + 4], uz = a[3 * c + 5], d0 = C0[c + 1],
+                 d1 = C1[c + 1];
     for (int r = 0; r < m; ++r) {
       const double jx = Jx[r], jy = Jy[r], jz = Jz[r], v0 = w0[r], v1 = w1[r];
       col0[r] = (jx * tx + jy * ty + jz * tz) + (v0 * c0 + v1 * c1);
@@ -183,10 +187,18 @@ void five_term_pass(int m, const double* __restrict Jx, const double* __restrict
   }
   if (c < m) {
     double* col = Kc + kNdof * c;
-    const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
+    const double tx = a[3 * c], ty = a[3 * c + 1], tz = a[3 * c + 2], c0 = C0[c], c1 = C1[c];
     for (int r = 0; r < m; ++r)
       col[r] = (Jx[r] * tx + Jy[r] * ty + Jz[r] * tz) + (w0[r] * c0 + w1[r] * c1);
   }
+}
+
+void five_term_pass(int m, const Linearization& lin, const double* w0, const double* w1,
+                    const double* a, double* Kc) {
+  if (m == kNdof)
+    five_term_pass<kNdof>(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, a, lin.C0, lin.C1, Kc);
+  else
+    five_term_pass<0>(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, a, lin.C0, lin.C1, Kc);
 }
 
 // The same where every column of J lies along its own axis (both segments
@@ -194,13 +206,12 @@ void five_term_pass(int m, const double* __restrict Jx, const double* __restrict
 // slots): the two zero products of J^T a drop out, the sums are unchanged.
 void three_term_pass(int m, const double* __restrict Jx, const double* __restrict Jy,
                      const double* __restrict Jz, const double* __restrict w0,
-                     const double* __restrict w1, const double* __restrict ax,
-                     const double* __restrict ay, const double* __restrict az,
+                     const double* __restrict w1, const double* __restrict a,
                      const double* __restrict C0, const double* __restrict C1,
                      double* __restrict Kc) {
   for (int c = 0; c < m; ++c) {
     double* col = Kc + kNdof * c;
-    const double tx = ax[c], ty = ay[c], tz = az[c], c0 = C0[c], c1 = C1[c];
+    const double tx = a[3 * c], ty = a[3 * c + 1], tz = a[3 * c + 2], c0 = C0[c], c1 = C1[c];
     for (int r = 0; r < m; r += 3) {
       col[r] = Jx[r] * tx + (w0[r] * c0 + w1[r] * c1);
       col[r + 1] = Jy[r + 1] * ty + (w0[r + 1] * c0 + w1[r + 1] * c1);
@@ -209,51 +220,26 @@ void three_term_pass(int m, const double* __restrict Jx, const double* __restric
   }
 }
 
-// The column factors of rows [k0, k1) (one beam's used columns, cc = cols[k]
-// - 12 on B), as the general loop of friction_tangent computes them but row
-// by row on gathered arrays, so that the compiler vectorises them (no
-// surface anchor: jn is the anchor point's jacobian column as it is):
-//   a = A J + Mjn jn + Mpd pd,  pd = this beam's P_,xi column (Mpd = Mta if
-//   the frame tangent is this beam's, else zero),
+// The row factors w0, w1 of rows [k0, k1) (one beam's used columns), as the
+// general loop of friction_tangent computes them but on the compact rows of
+// J and Q = [P_A,xi, P_B,eta] (lin), which vectorise:
 //   w0 = b0 - [P_A,xi^T T on A] - J.v_xi,  w1 = b1 + [P_B,eta^T T on B] - J.v_eta,
 // with the same sums in the same order.
 template <bool kOnA>
-void factor_rows(int k0, int k1, const int* cols, const double* Pn, const double* Pd,
-                 const double* A, const double* Mjn, const double* Mpd, const double* T,
-                 const double* v_xi, const double* v_eta, const double* b0v, const double* b1v,
-                 double sb, const Linearization& lin, double* __restrict ax,
-                 double* __restrict ay, double* __restrict az, double* __restrict w0,
-                 double* __restrict w1) {
-  double jn[3][kNdof], pd[3][kNdof];
-  const double sn = kOnA ? 1.0 : -1.0;
-  for (int k = k0; k < k1; ++k) {  // gather: 3 x 12 column-major to rows
-    const int cc = kOnA ? cols[k] : cols[k] - 12;
-    for (int i = 0; i < 3; ++i) {
-      jn[i][k] = sn * Pn[3 * cc + i];
-      pd[i][k] = Pd[3 * cc + i];
-    }
-  }
+void factor_rows(int k0, int k1, const double* T, const double* v_xi, const double* v_eta,
+                 const double* b0v, const double* b1v, double sb, const Linearization& lin,
+                 double* __restrict w0, double* __restrict w1) {
   const double* __restrict Jx = lin.Jx;
   const double* __restrict Jy = lin.Jy;
   const double* __restrict Jz = lin.Jz;
-  const double* __restrict jx = jn[0];
-  const double* __restrict jy = jn[1];
-  const double* __restrict jz = jn[2];
-  const double* __restrict px = pd[0];
-  const double* __restrict py = pd[1];
-  const double* __restrict pz = pd[2];
+  const double* __restrict px = lin.Qx;
+  const double* __restrict py = lin.Qy;
+  const double* __restrict pz = lin.Qz;
   const double* __restrict b0 = b0v;
   const double* __restrict b1 = b1v;
   for (int k = k0; k < k1; ++k) {
     const double J0 = Jx[k], J1 = Jy[k], J2 = Jz[k];
-    const double n0 = jx[k], n1 = jy[k], n2 = jz[k];
     const double p0 = px[k], p1 = py[k], p2 = pz[k];
-    ax[k] = ((A[0] * J0 + A[3] * J1 + A[6] * J2) + (Mjn[0] * n0 + Mjn[3] * n1 + Mjn[6] * n2)) +
-            (Mpd[0] * p0 + Mpd[3] * p1 + Mpd[6] * p2);
-    ay[k] = ((A[1] * J0 + A[4] * J1 + A[7] * J2) + (Mjn[1] * n0 + Mjn[4] * n1 + Mjn[7] * n2)) +
-            (Mpd[1] * p0 + Mpd[4] * p1 + Mpd[7] * p2);
-    az[k] = ((A[2] * J0 + A[5] * J1 + A[8] * J2) + (Mjn[2] * n0 + Mjn[5] * n1 + Mjn[8] * n2)) +
-            (Mpd[2] * p0 + Mpd[5] * p1 + Mpd[8] * p2);
     const double conv = p0 * T[0] + p1 * T[1] + p2 * T[2];
     const double jxi = J0 * v_xi[0] + J1 * v_xi[1] + J2 * v_xi[2];
     const double jeta = J0 * v_eta[0] + J1 * v_eta[1] + J2 * v_eta[2];
@@ -267,12 +253,6 @@ void factor_rows(int k0, int k1, const int* cols, const double* Pn, const double
 void friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
                       const Linearization& lin, const double* PAd, const double* PBd,
                       double* Kc) {
-  double PAn[36], PBn[36], PBnd[36];
-  c.sa->jacobian(fr.xi_n, PAn);
-  if (fr.surface)  // the surface anchor moves with B's tangent at eta_n too
-    c.sb->jacobians(fr.eta_n, PBn, PBnd);
-  else
-    c.sb->jacobian(fr.eta_n, PBn);
   const double* n = c.n;
   const double eps = p.tangential_penalty;
   const double nd = dot3(n, fr.anchor_gap);
@@ -381,51 +361,66 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
   // dxi = -C0, deta = -C1: w0 = s B0 (f av) - (J v_xi) - [P_A,xi^T T; 0],
   // w1 = s B1 (f bv) - (J v_eta) + [0; P_B,eta^T T].
   const int m = lin.m;
-  double ax[kNdof], ay[kNdof], az[kNdof], w0[kNdof], w1[kNdof];
-  // Both segments linear in X: every column of J, P_A,xi, P_B,eta and J_n
-  // along its own axis i = k % 3, so that each 3x3 product is one column of
-  // the matrix (the same sums: the other two products are zeros).
-  // (Not with the surface anchor: its dm has no such direction.)
-  const bool axial =
-      lin.axial && c.sa->linear_in_X() && c.sb->linear_in_X() && !fr.surface;
-  for (int k = 0; k < m && axial; ++k) {
-    const int col = lin.cols[k];
-    const bool on_a = col < 12;
-    const int cc = on_a ? col : col - 12, i = k % 3;
-    const double ji = i == 0 ? lin.Jx[k] : (i == 1 ? lin.Jy[k] : lin.Jz[k]);
-    const double jn = on_a ? PAn[3 * cc + i] : -PBn[3 * cc + i];
-    const double pd = on_a ? PAd[3 * cc + i] : PBd[3 * cc + i];
-    const bool with_pd = (pd_on_a && on_a) || (pd_on_b && !on_a);
-    double a[3];
-    for (int r = 0; r < 3; ++r) {
-      a[r] = A[r + 3 * i] * ji + Mjn[r + 3 * i] * jn;
-      if (with_pd) a[r] += Mta[r + 3 * i] * pd;
+  double a[3 * kNdof], w0[kNdof], w1[kNdof];  // a: 3 x m, column-major
+  const double* b0 = rotating ? lin.B0 : lin.av;
+  const double* b1 = rotating ? lin.B1 : lin.bv;
+  const double sb = rotating ? s : f;
+  if (!fr.surface && !(lin.axial && c.sa->linear_in_X() && c.sb->linear_in_X())) {
+    // On each beam a = A J + Mjn jn + Mpd pd is one combination of the
+    // segment's jacobians at the contact and at the anchor
+    // (Segment::combine_jacobians): no jacobian at the anchor, no three 3x3
+    // products per column. J = -P_B, jn = -P_B(eta_n) on B: A and Mjn
+    // change sign there; pd is P_A,xi or P_B,eta for the beam whose tangent
+    // the frame follows (Mpd = Mta), absent on the other.
+    double nA[9], nMjn[9];
+    for (int e = 0; e < 9; ++e) {
+      nA[e] = -A[e];
+      nMjn[e] = -Mjn[e];
     }
-    ax[k] = a[0];
-    ay[k] = a[1];
-    az[k] = a[2];
-    const double b0 = rotating ? s * lin.B0[k] : f * lin.av[k];
-    const double b1 = rotating ? s * lin.B1[k] : f * lin.bv[k];
-    const double conv = pd * fr.T[i];
-    w0[k] = (on_a ? b0 - conv : b0) - ji * v_xi[i];
-    w1[k] = (on_a ? b1 : b1 + conv) - ji * v_eta[i];
-  }
-  if (axial) {
-    three_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, ax, ay, az, lin.C0, lin.C1, Kc);
-    return;
-  }
-  if (!fr.surface) {  // the factors row by row, per beam (factor_rows)
+    using Term = curve::Segment::JacobianTerm;
+    const Term terms_a[3] = {{c.xi, false, A}, {fr.xi_n, false, Mjn}, {c.xi, true, Mta}};
+    const Term terms_b[3] = {{c.eta, false, nA}, {fr.eta_n, false, nMjn}, {c.eta, true, Mta}};
+    double Y[3 * kNdof];             // 3 x 24: A's 12 columns, then B's
+    double* y = m == kNdof ? a : Y;  // every column used: a itself
+    c.sa->combine_jacobians(pd_on_a ? 3 : 2, terms_a, y);
+    c.sb->combine_jacobians(pd_on_b ? 3 : 2, terms_b, y + 36);
+    if (y != a)
+      for (int k = 0; k < m; ++k)
+        for (int i = 0; i < 3; ++i) a[3 * k + i] = Y[3 * lin.cols[k] + i];
     int ma = 0;
     while (ma < m && lin.cols[ma] < 12) ++ma;
-    const double zero[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    const double* b0 = rotating ? lin.B0 : lin.av;
-    const double* b1 = rotating ? lin.B1 : lin.bv;
-    const double sb = rotating ? s : f;
-    factor_rows<true>(0, ma, lin.cols, PAn, PAd, A, Mjn, pd_on_a ? Mta : zero, fr.T, v_xi,
-                      v_eta, b0, b1, sb, lin, ax, ay, az, w0, w1);
-    factor_rows<false>(ma, m, lin.cols, PBn, PBd, A, Mjn, pd_on_b ? Mta : zero, fr.T, v_xi,
-                       v_eta, b0, b1, sb, lin, ax, ay, az, w0, w1);
-    five_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, ax, ay, az, lin.C0, lin.C1, Kc);
+    factor_rows<true>(0, ma, fr.T, v_xi, v_eta, b0, b1, sb, lin, w0, w1);
+    factor_rows<false>(ma, m, fr.T, v_xi, v_eta, b0, b1, sb, lin, w0, w1);
+    five_term_pass(m, lin, w0, w1, a, Kc);
+    return;
+  }
+  double PAn[36], PBn[36], PBnd[36];  // the anchors' jacobians
+  c.sa->jacobian(fr.xi_n, PAn);
+  if (fr.surface)  // the surface anchor moves with B's tangent at eta_n too
+    c.sb->jacobians(fr.eta_n, PBn, PBnd);
+  else
+    c.sb->jacobian(fr.eta_n, PBn);
+  if (!fr.surface) {
+    // Both segments linear in X: every column of J, P_A,xi, P_B,eta and J_n
+    // along its own axis i = k % 3, so that each 3x3 product is one column
+    // of the matrix (the same sums: the other two products are zeros).
+    for (int k = 0; k < m; ++k) {
+      const int col = lin.cols[k];
+      const bool on_a = col < 12;
+      const int cc = on_a ? col : col - 12, i = k % 3;
+      const double ji = i == 0 ? lin.Jx[k] : (i == 1 ? lin.Jy[k] : lin.Jz[k]);
+      const double jn = on_a ? PAn[3 * cc + i] : -PBn[3 * cc + i];
+      const double pd = on_a ? PAd[3 * cc + i] : PBd[3 * cc + i];
+      const bool with_pd = (pd_on_a && on_a) || (pd_on_b && !on_a);
+      for (int r = 0; r < 3; ++r) {
+        a[3 * k + r] = A[r + 3 * i] * ji + Mjn[r + 3 * i] * jn;
+        if (with_pd) a[3 * k + r] += Mta[r + 3 * i] * pd;
+      }
+      const double conv = pd * fr.T[i];
+      w0[k] = (on_a ? sb * b0[k] - conv : sb * b0[k]) - ji * v_xi[i];
+      w1[k] = (on_a ? sb * b1[k] : sb * b1[k] + conv) - ji * v_eta[i];
+    }
+    three_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, a, lin.C0, lin.C1, Kc);
     return;
   }
   for (int k = 0; k < m; ++k) {
@@ -433,11 +428,11 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
     const bool on_a = col < 12;
     const int cc = on_a ? col : col - 12;
     const double J[3] = {lin.Jx[k], lin.Jy[k], lin.Jz[k]};
-    double a[3], y[3];
+    double ak[3], y[3];
     const double* pn = on_a ? PAn + 3 * cc : PBn + 3 * cc;
     const double sn = on_a ? 1.0 : -1.0;
     double jn[3] = {sn * pn[0], sn * pn[1], sn * pn[2]};
-    if (fr.surface && !on_a) {
+    if (!on_a) {
       // the surface anchor's - r_B dm: dt = (I - t t^T) dx_B,eta(eta_n) / |x_B,eta|,
       // dp = -(dt (t.n_n) + t (dt.n_n)), dm = (I - m m^T) dp / |p|
       const double* pdn = PBnd + 3 * cc;
@@ -451,27 +446,24 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
       for (int i = 0; i < 3; ++i)
         jn[i] -= c.surface_b * (dp[i] - mdp * fr.surface_m[i]) / fr.surface_pn;
     }
-    matvec3(A, J, a);
+    matvec3(A, J, ak);
     matvec3(Mjn, jn, y);
-    for (int i = 0; i < 3; ++i) a[i] += y[i];
+    for (int i = 0; i < 3; ++i) ak[i] += y[i];
     if ((pd_on_a && on_a) || (pd_on_b && !on_a)) {
       matvec3(Mta, (on_a ? PAd : PBd) + 3 * cc, y);
-      for (int i = 0; i < 3; ++i) a[i] += y[i];
+      for (int i = 0; i < 3; ++i) ak[i] += y[i];
     }
-    ax[k] = a[0];
-    ay[k] = a[1];
-    az[k] = a[2];
-    const double b0 = rotating ? s * lin.B0[k] : f * lin.av[k];
-    const double b1 = rotating ? s * lin.B1[k] : f * lin.bv[k];
+    for (int i = 0; i < 3; ++i) a[3 * k + i] = ak[i];
+    const double b0k = sb * b0[k], b1k = sb * b1[k];
     if (on_a) {
-      w0[k] = (b0 - dot3(PAd + 3 * cc, fr.T)) - dot3(J, v_xi);
-      w1[k] = b1 - dot3(J, v_eta);
+      w0[k] = (b0k - dot3(PAd + 3 * cc, fr.T)) - dot3(J, v_xi);
+      w1[k] = b1k - dot3(J, v_eta);
     } else {
-      w0[k] = b0 - dot3(J, v_xi);
-      w1[k] = (b1 + dot3(PBd + 3 * cc, fr.T)) - dot3(J, v_eta);
+      w0[k] = b0k - dot3(J, v_xi);
+      w1[k] = (b1k + dot3(PBd + 3 * cc, fr.T)) - dot3(J, v_eta);
     }
   }
-  five_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, ax, ay, az, lin.C0, lin.C1, Kc);
+  five_term_pass(m, lin, w0, w1, a, Kc);
 }
 
 }  // namespace pair

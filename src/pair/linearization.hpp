@@ -18,6 +18,7 @@ struct Linearization {
   int m = 0;          // number of used columns
   int cols[kNdof];    // their indices in 0..23
   double Jx[kNdof], Jy[kNdof], Jz[kNdof];  // rows of J
+  double Qx[kNdof], Qy[kNdof], Qz[kNdof];  // rows of [P_A,xi, P_B,eta] (no sign, unlike J)
   double g[kNdof];    // dg/dX = n . J (unsigned distance; the caller's sign is in n)
   double B0[kNdof], B1[kNdof];  // B = d(grad phi)/dX
   double C0[kNdof], C1[kNdof];  // H^-1 B: dxi/dX = -C0, deta/dX = -C1
