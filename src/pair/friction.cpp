@@ -179,6 +179,7 @@ void five_term_pass(int m_, const double* __restrict Jx, const double* __restric
     const double tx = a[3 * c], ty = a[3 * c + 1], tz = a[3 * c + 2], c0 = C0[c], c1 = C1[c];
     const double ux = a[3 * c + 3], uy = a[3 * c + 4], uz = a[3 * c + 5], d0 = C0[c + 1],
                  d1 = C1[c + 1];
+#pragma GCC unroll 4
     for (int r = 0; r < m; ++r) {
       const double jx = Jx[r], jy = Jy[r], jz = Jz[r], v0 = w0[r], v1 = w1[r];
       col0[r] = (jx * tx + jy * ty + jz * tz) + (v0 * c0 + v1 * c1);
@@ -387,10 +388,8 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
     if (y != a)
       for (int k = 0; k < m; ++k)
         for (int i = 0; i < 3; ++i) a[3 * k + i] = Y[3 * lin.cols[k] + i];
-    int ma = 0;
-    while (ma < m && lin.cols[ma] < 12) ++ma;
-    factor_rows<true>(0, ma, fr.T, v_xi, v_eta, b0, b1, sb, lin, w0, w1);
-    factor_rows<false>(ma, m, fr.T, v_xi, v_eta, b0, b1, sb, lin, w0, w1);
+    factor_rows<true>(0, lin.m_a, fr.T, v_xi, v_eta, b0, b1, sb, lin, w0, w1);
+    factor_rows<false>(lin.m_a, m, fr.T, v_xi, v_eta, b0, b1, sb, lin, w0, w1);
     five_term_pass(m, lin, w0, w1, a, Kc);
     return;
   }
