@@ -135,11 +135,6 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
 namespace {
 
 // 3 x 3 matrices, column-major.
-void matmul3(const double* A, const double* B, double* C) {  // C = A B
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i)
-      C[i + 3 * j] = A[i] * B[3 * j] + A[i + 3] * B[3 * j + 1] + A[i + 6] * B[3 * j + 2];
-}
 void matvec3(const double* A, const double* v, double* y) {  // y = A v
   for (int i = 0; i < 3; ++i) y[i] = A[i] * v[0] + A[i + 3] * v[1] + A[i + 6] * v[2];
 }
@@ -274,28 +269,33 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
   //   dT   = R dT_tr + mu f' that (n.J),  R = ratio (I - that that^T) in slip, I in stick
   // so dT = Mdn dn + Mta dta + Mjn jn + tg n^T J with Mta = R F E S,
   // Mdn = R (G - F E Q), Mjn = eps R Pn, tg = mu f' that (slip).
-  double Pn[9], R[9], E[9], F[9], G[9], tg[3] = {0, 0, 0};
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) Pn[i + 3 * j] = (i == j ? 1.0 : 0.0) - n[i] * n[j];
+  // Every factor but F and G is the identity plus rank-one terms, so each
+  // product with one is a rank-one correction (9 products, not 27):
+  //   X Pn = X - (X n) n^T,  X E = (X - (X e1) e1^T) / |t|,
+  //   R X = ratio (X - that (that^T X)) in slip.
+  double ratio = 1.0, that[3] = {0, 0, 0}, tg[3] = {0, 0, 0};
   if (slip) {
-    double that[3], mthat[3];
     for (int i = 0; i < 3; ++i) {
       that[i] = fr.trial[i] / fr.trial_norm;
       tg[i] = p.friction * fp * that[i];
     }
-    const double ratio = limit / fr.trial_norm;
-    for (int i = 0; i < 3; ++i) mthat[i] = -ratio * that[i];
-    rank_one3(ratio, mthat, that, R);
-  } else {
-    const double zero[3] = {0, 0, 0};
-    rank_one3(1.0, zero, zero, R);
+    ratio = limit / fr.trial_norm;
   }
-  {
-    double me1[3];
-    const double inv = 1.0 / fr.frame_norm;
-    for (int i = 0; i < 3; ++i) me1[i] = -inv * fr.e1[i];
-    rank_one3(inv, me1, fr.e1, E);
-  }
+  auto apply_R = [&](double* X) {  // X = R X
+    if (!slip) return;
+    for (int j = 0; j < 3; ++j) {
+      double* x = X + 3 * j;
+      const double d = dot3(that, x);
+      for (int i = 0; i < 3; ++i) x[i] = ratio * (x[i] - that[i] * d);
+    }
+  };
+  auto times_Pn = [n](const double* X, double scale, double* Y) {  // Y = scale X Pn
+    double xn[3];
+    matvec3(X, n, xn);
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) Y[i + 3 * j] = scale * (X[i + 3 * j] - xn[i] * n[j]);
+  };
+  double F[9], G[9];
   cross_matrix3(fr.committed_e1, fr.committed_e2, n, F);
   {
     double Ge[9], epsn[3];
@@ -304,39 +304,53 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
     rank_one3(-eps * nd, epsn, fr.anchor_gap, G);
     for (int k = 0; k < 9; ++k) G[k] += Ge[k];
   }
-  double FE[9], RFE[9], Mta[9], Mdn[9], Mjn[9], tmp[9];
-  matmul3(F, E, FE);
-  matmul3(R, FE, RFE);
-  if (fr.projected) {
-    const double* t = frame_tangent(fr, c);
-    double Q[9], FEQ[9];
-    rank_one3(dot3(n, t), n, t, Q);
-    matmul3(FE, Q, FEQ);
-    for (int k = 0; k < 9; ++k) tmp[k] = G[k] - FEQ[k];
-    matmul3(RFE, Pn, Mta);
-  } else {
-    for (int k = 0; k < 9; ++k) {
-      tmp[k] = G[k];
-      Mta[k] = RFE[k];
-    }
+  double FE[9], RFE[9], Mta[9], Mdn[9], Mjn[9];
+  {
+    double fe1[3];
+    matvec3(F, fr.e1, fe1);
+    const double inv = 1.0 / fr.frame_norm;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) FE[i + 3 * j] = inv * (F[i + 3 * j] - fe1[i] * fr.e1[j]);
   }
-  matmul3(R, tmp, Mdn);
-  matmul3(R, Pn, Mjn);
+  for (int k = 0; k < 9; ++k) {
+    RFE[k] = FE[k];
+    Mdn[k] = G[k];
+  }
+  apply_R(RFE);
+  if (fr.projected) {  // FE Q = (n.t) FE + (FE n) t^T; Mta = RFE Pn
+    const double* t = frame_tangent(fr, c);
+    const double nt = dot3(n, t);
+    double fen[3];
+    matvec3(FE, n, fen);
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) Mdn[i + 3 * j] -= nt * FE[i + 3 * j] + fen[i] * t[j];
+    times_Pn(RFE, 1.0, Mta);
+  } else {
+    for (int k = 0; k < 9; ++k) Mta[k] = RFE[k];
+  }
+  apply_R(Mdn);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) Mjn[i + 3 * j] = (i == j ? 1.0 : 0.0) - n[i] * n[j];
+  apply_R(Mjn);
   for (int k = 0; k < 9; ++k) Mjn[k] *= eps;
   // dn's factors: Pn / rho on J, Pn x_A,xi / rho on dxi, -Pn x_B,eta / rho on deta
   // (zero where the normal does not rotate).
   const double inv_rho = rotating ? 1.0 / c.rho_signed : 0.0;
-  double PnR[9], dn_xi[3], dn_eta[3];
-  for (int k = 0; k < 9; ++k) PnR[k] = Pn[k] * inv_rho;
-  matvec3(PnR, c.ta, dn_xi);
-  matvec3(PnR, c.tb, dn_eta);
+  double dn_xi[3], dn_eta[3];
+  {
+    const double nta = dot3(n, c.ta), ntb = dot3(n, c.tb);
+    for (int i = 0; i < 3; ++i) {
+      dn_xi[i] = inv_rho * (c.ta[i] - n[i] * nta);
+      dn_eta[i] = inv_rho * (c.tb[i] - n[i] * ntb);
+    }
+  }
   // The columns' factor a = M J + dT, with the normal part M = -s I + (s -
   // f') n n^T (-f' n n^T at intersecting axes), all on J in one matrix:
   //   A = M + Mdn Pn / rho + tg n^T;
   // the terms in dxi and deta go to the rows (below): v_xi = Mdn dn_xi
   // (+ Mta x_A,xixi, frame A), v_eta = -Mdn dn_eta (+ Mta x_B,etaeta, frame B).
   double A[9], v_xi[3], v_eta[3];
-  matmul3(Mdn, PnR, A);
+  times_Pn(Mdn, inv_rho, A);
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
       A[i + 3 * j] += (i == j ? -s : 0.0) + ((s - fp) * n[i] + tg[i]) * n[j];
