@@ -326,7 +326,8 @@ void combine_terms(int n, const Segment::JacobianTerm* terms, const double* c, i
 
 }  // namespace
 
-void Segment::combine_jacobians(int n, const JacobianTerm* terms, double* Y) const {
+void Segment::combine_jacobians(int n, const JacobianTerm* terms, unsigned used,
+                                double* Y) const {
   // The weights of jacobians() at each term's xi: slot s's identity block
   // wgt[s] (dwgt[s]) and end tangent k's h[k] (dh[k]).
   double ws[kMaxJacobianTerms][4], wk[kMaxJacobianTerms][2];
@@ -349,19 +350,24 @@ void Segment::combine_jacobians(int n, const JacobianTerm* terms, double* Y) con
         for (int s = 0; s < 4; ++s) wgt[s] += h[k] * term_[k].coef[s];
     }
   }
+  double* block[4] = {nullptr, nullptr, nullptr, nullptr};  // the used slots' blocks in Y
+  double* y = Y;
   for (int s = 0; s < 4; ++s) {
+    if (!(used & (1u << s))) continue;
+    block[s] = y;
+    y += 9;
     bool read = false;  // a slot no term's linear part reads: a zero block
     for (int t = 0; t < n; ++t) read = read || ws[t][s] != 0.0;
     if (read)
-      combine_terms(n, terms, &ws[0][s], 4, Y + 9 * s);
+      combine_terms(n, terms, &ws[0][s], 4, block[s]);
     else
-      for (int e = 0; e < 9; ++e) Y[9 * s + e] = 0.0;
+      for (int e = 0; e < 9; ++e) block[s][e] = 0.0;
   }
   for (int k = 1; k < 4; k += 2) {
     if (!term_[k].nonlinear) continue;
     double N[9];
     combine_terms(n, terms, &wk[0][k / 2], 2, N);
-    tangent_of(k).add_product(N, Y);
+    tangent_of(k).add_product(N, block);
   }
 }
 

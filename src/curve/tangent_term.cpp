@@ -136,14 +136,14 @@ void TangentTerm::jacobian() {
     }
 }
 
-void TangentTerm::add_product(const double* N, double* Y) const {
+void TangentTerm::add_product(const double* N, double* const Y[4]) const {
   if (dir == Dir::Weighted) {
     // The direction's blocks are general 3x3 matrices: N jac on the slots
     // a, b, c (p and q are among them on every segment that has this rule).
     for (int slot = 0; slot < 4; ++slot) {
       if (slot != a && slot != b && slot != c && slot != p && slot != q) continue;
       const double* J = jac + 9 * slot;
-      double* y = Y + 9 * slot;
+      double* y = Y[slot];
       for (int j = 0; j < 3; ++j)
         for (int i = 0; i < 3; ++i)
           y[i + 3 * j] += N[i] * J[3 * j] + N[i + 3] * J[3 * j + 1] + N[i + 6] * J[3 * j + 2];
@@ -157,7 +157,7 @@ void TangentTerm::add_product(const double* N, double* Y) const {
   // (Each block through a local copy: the compiler cannot know that the
   // slots' blocks of Y do not overlap.)
   auto add_to = [Y](int slot, const double* v, bool minus) {
-    double* y = Y + 9 * slot;
+    double* y = Y[slot];
     for (int k = 0; k < 9; ++k) y[k] = minus ? y[k] - v[k] : y[k] + v[k];
   };
   double v[9];

@@ -200,19 +200,29 @@ void five_term_pass(int m, const Linearization& lin, const double* w0, const dou
 // The same where every column of J lies along its own axis (both segments
 // linear in X; row r along axis r % 3, the used columns come in whole
 // slots): the two zero products of J^T a drop out, the sums are unchanged.
-void three_term_pass(int m, const double* __restrict Jx, const double* __restrict Jy,
-                     const double* __restrict Jz, const double* __restrict w0,
+// Six rows at a time (two of each axis), so that the rows pair up with the
+// column's factors (ax, ay), (az, ax), (ay, az) and vectorise.
+void three_term_pass(int m, const Linearization& lin, const double* __restrict w0,
                      const double* __restrict w1, const double* __restrict a,
-                     const double* __restrict C0, const double* __restrict C1,
                      double* __restrict Kc) {
+  double jd[kNdof];  // J's entry on its axis, row by row
+  for (int r = 0; r < m; r += 3) {
+    jd[r] = lin.Jx[r];
+    jd[r + 1] = lin.Jy[r + 1];
+    jd[r + 2] = lin.Jz[r + 2];
+  }
+  const double* __restrict C0 = lin.C0;
+  const double* __restrict C1 = lin.C1;
+  const int m6 = m - m % 6;
   for (int c = 0; c < m; ++c) {
-    double* col = Kc + kNdof * c;
-    const double tx = a[3 * c], ty = a[3 * c + 1], tz = a[3 * c + 2], c0 = C0[c], c1 = C1[c];
-    for (int r = 0; r < m; r += 3) {
-      col[r] = Jx[r] * tx + (w0[r] * c0 + w1[r] * c1);
-      col[r + 1] = Jy[r + 1] * ty + (w0[r + 1] * c0 + w1[r + 1] * c1);
-      col[r + 2] = Jz[r + 2] * tz + (w0[r + 2] * c0 + w1[r + 2] * c1);
-    }
+    double* __restrict col = Kc + kNdof * c;
+    const double t[3] = {a[3 * c], a[3 * c + 1], a[3 * c + 2]};
+    const double c0 = C0[c], c1 = C1[c];
+    int r = 0;
+    for (; r < m6; r += 6)
+      for (int q = 0; q < 6; ++q)
+        col[r + q] = jd[r + q] * t[q % 3] + (w0[r + q] * c0 + w1[r + q] * c1);
+    for (; r < m; ++r) col[r] = jd[r] * t[r % 3] + (w0[r] * c0 + w1[r] * c1);
   }
 }
 
@@ -380,7 +390,7 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
   const double* b0 = rotating ? lin.B0 : lin.av;
   const double* b1 = rotating ? lin.B1 : lin.bv;
   const double sb = rotating ? s : f;
-  if (!fr.surface && !(lin.axial && c.sa->linear_in_X() && c.sb->linear_in_X())) {
+  if (!fr.surface) {
     // On each beam a = A J + Mjn jn + Mpd pd is one combination of the
     // segment's jacobians at the contact and at the anchor
     // (Segment::combine_jacobians): no jacobian at the anchor, no three 3x3
@@ -395,47 +405,22 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
     using Term = curve::Segment::JacobianTerm;
     const Term terms_a[3] = {{c.xi, false, A}, {fr.xi_n, false, Mjn}, {c.xi, true, Mta}};
     const Term terms_b[3] = {{c.eta, false, nA}, {fr.eta_n, false, nMjn}, {c.eta, true, Mta}};
-    double Y[3 * kNdof];             // 3 x 24: A's 12 columns, then B's
-    double* y = m == kNdof ? a : Y;  // every column used: a itself
-    c.sa->combine_jacobians(pd_on_a ? 3 : 2, terms_a, y);
-    c.sb->combine_jacobians(pd_on_b ? 3 : 2, terms_b, y + 36);
-    if (y != a)
-      for (int k = 0; k < m; ++k)
-        for (int i = 0; i < 3; ++i) a[3 * k + i] = Y[3 * lin.cols[k] + i];
+    // (The used columns are whole slots in slot order: a, A's then B's.)
+    c.sa->combine_jacobians(pd_on_a ? 3 : 2, terms_a, lin.used_a, a);
+    c.sb->combine_jacobians(pd_on_b ? 3 : 2, terms_b, lin.used_b, a + 3 * lin.m_a);
     factor_rows<true>(0, lin.m_a, fr.T, v_xi, v_eta, b0, b1, sb, lin, w0, w1);
     factor_rows<false>(lin.m_a, m, fr.T, v_xi, v_eta, b0, b1, sb, lin, w0, w1);
-    five_term_pass(m, lin, w0, w1, a, Kc);
+    if (lin.axial && c.sa->linear_in_X() && c.sb->linear_in_X())
+      three_term_pass(m, lin, w0, w1, a, Kc);
+    else
+      five_term_pass(m, lin, w0, w1, a, Kc);
     return;
   }
-  double PAn[36], PBn[36], PBnd[36];  // the anchors' jacobians
+  // The surface anchor (a line-contact point): its - r_B dm moves with B's
+  // tangent at eta_n too, column by column with the anchors' jacobians.
+  double PAn[36], PBn[36], PBnd[36];
   c.sa->jacobian(fr.xi_n, PAn);
-  if (fr.surface)  // the surface anchor moves with B's tangent at eta_n too
-    c.sb->jacobians(fr.eta_n, PBn, PBnd);
-  else
-    c.sb->jacobian(fr.eta_n, PBn);
-  if (!fr.surface) {
-    // Both segments linear in X: every column of J, P_A,xi, P_B,eta and J_n
-    // along its own axis i = k % 3, so that each 3x3 product is one column
-    // of the matrix (the same sums: the other two products are zeros).
-    for (int k = 0; k < m; ++k) {
-      const int col = lin.cols[k];
-      const bool on_a = col < 12;
-      const int cc = on_a ? col : col - 12, i = k % 3;
-      const double ji = i == 0 ? lin.Jx[k] : (i == 1 ? lin.Jy[k] : lin.Jz[k]);
-      const double jn = on_a ? PAn[3 * cc + i] : -PBn[3 * cc + i];
-      const double pd = on_a ? PAd[3 * cc + i] : PBd[3 * cc + i];
-      const bool with_pd = (pd_on_a && on_a) || (pd_on_b && !on_a);
-      for (int r = 0; r < 3; ++r) {
-        a[3 * k + r] = A[r + 3 * i] * ji + Mjn[r + 3 * i] * jn;
-        if (with_pd) a[3 * k + r] += Mta[r + 3 * i] * pd;
-      }
-      const double conv = pd * fr.T[i];
-      w0[k] = (on_a ? sb * b0[k] - conv : sb * b0[k]) - ji * v_xi[i];
-      w1[k] = (on_a ? sb * b1[k] : sb * b1[k] + conv) - ji * v_eta[i];
-    }
-    three_term_pass(m, lin.Jx, lin.Jy, lin.Jz, w0, w1, a, lin.C0, lin.C1, Kc);
-    return;
-  }
+  c.sb->jacobians(fr.eta_n, PBn, PBnd);
   for (int k = 0; k < m; ++k) {
     const int col = lin.cols[k];
     const bool on_a = col < 12;

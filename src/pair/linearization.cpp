@@ -87,6 +87,8 @@ void linearize(unsigned used_a, unsigned used_b, const ContactGeometry& geo, Lin
   bool axial = true;
   const int ma = gather_beam<true>(used_a, geo.PA, geo.PAd, lin, 0, axial);
   lin.m_a = ma;
+  lin.used_a = used_a;
+  lin.used_b = used_b;
   lin.m = gather_beam<false>(used_b, geo.PB, geo.PBd, lin, ma, axial);
   lin.axial = axial;
   linearize_rows<true>(geo, inv_det, 0, ma, lin);

@@ -17,6 +17,7 @@ constexpr int kNdof = 24;
 struct Linearization {
   int m = 0;          // number of used columns
   int m_a = 0;        // of which A's (the first m_a)
+  unsigned used_a = 0, used_b = 0;  // the slots they come from (curve::used_slots)
   int cols[kNdof];    // their indices in 0..23
   double Jx[kNdof], Jy[kNdof], Jz[kNdof];  // rows of J
   double Qx[kNdof], Qy[kNdof], Qz[kNdof];  // rows of [P_A,xi, P_B,eta] (no sign, unlike J)
