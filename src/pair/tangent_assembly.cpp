@@ -68,7 +68,13 @@ bool all_finite4(const double* v, int n) {
 // finite sum settles it. Only a sum that overflows although every entry is
 // finite (a tangent near the double range) needs the exact check. Eight
 // independent sums, which the compiler packs into four vector sums (with
-// four, as all_finite4, the loop costs a quarter more).
+// four, as all_finite4, the loop costs a quarter more). Not inlined: in
+// assemble_tangent it changed the code of the frictionless path around it
+// (82 instructions more per nodal evaluation, in mirror_upper_checked's
+// loop), which never calls it.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 bool all_finite_by_sum(const double* v, int n) {
   double a[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   for (int i = 0; i < n; i += 8)
