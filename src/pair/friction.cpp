@@ -22,6 +22,18 @@ constexpr double kFrameMinSin2 = 1e-2;
 const double* frame_tangent(const FrictionResult& fr, const FrictionContact& c) {
   return fr.frame_source == kFrameA ? c.ta : (fr.frame_source == kFrameB ? c.tb : fr.axis);
 }
+
+// |v|, neither underflowing nor overflowing where v does not (a tiny trial
+// force read as zero would stick beyond the Coulomb limit): the plain sum of
+// squares where the largest component lies within 1e+-150 (no square can
+// overflow, and one that underflows is below the rounding of the largest),
+// std::hypot only outside (its three divisions cost more than the rest of
+// the return mapping).
+double safe_norm3(const double* v) {
+  const double a = curve::max_abs3(v);  // (a NaN goes either way, and stays NaN)
+  if (a > 1e-150 && a < 1e150) return std::sqrt(dot3(v, v));
+  return std::hypot(v[0], v[1], v[2]);
+}
 }  // namespace
 
 FrictionResult friction_force(const Params& p, const FrictionContact& c, const double* hist_old) {
@@ -29,7 +41,8 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   fr.state = B2B_FRICTION_STICK;
   fr.speed_a = norm3(c.ta);
   fr.frame_norm = fr.speed_a;
-  for (int i = 0; i < 3; ++i) fr.e1[i] = c.ta[i] / fr.speed_a;
+  const double inv_speed = 1.0 / fr.speed_a;
+  for (int i = 0; i < 3; ++i) fr.e1[i] = c.ta[i] * inv_speed;
   if (c.held) {
     // An end contact: the held beam's tangent is not normal to n (the node's
     // distance is minimised along the other beam only), and x_A,xi/|x_A,xi|
@@ -67,7 +80,8 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
     const double tn = dot3(c.n, t);
     for (int i = 0; i < 3; ++i) fr.e1[i] = t[i] - tn * c.n[i];
     fr.frame_norm = norm3(fr.e1);
-    for (int i = 0; i < 3; ++i) fr.e1[i] /= fr.frame_norm;
+    const double inv_norm = 1.0 / fr.frame_norm;
+    for (int i = 0; i < 3; ++i) fr.e1[i] *= inv_norm;
   }
   cross3(c.n, fr.e1, fr.e2);
   fr.anchored = hist_old[kHistTag] == kHistTagV1 && hist_old[kHistInContact] == 1.0;
@@ -111,21 +125,20 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
   for (int i = 0; i < 3; ++i)
     fr.trial[i] = fr.committed_e1 * fr.e1[i] + fr.committed_e2 * fr.e2[i] +
                   eps * (fr.anchor_gap[i] - nd * c.n[i]);
-  // hypot: |T_trial| neither underflows nor overflows where T_trial does not
-  // (a tiny trial force read as zero would stick beyond the Coulomb limit).
-  fr.trial_norm = std::hypot(fr.trial[0], fr.trial[1], fr.trial[2]);
+  fr.trial_norm = safe_norm3(fr.trial);
   const double limit = p.friction * c.normal_force;
   if (fr.trial_norm <= limit) {
     for (int i = 0; i < 3; ++i) fr.T[i] = fr.trial[i];
   } else {
     fr.state = B2B_FRICTION_SLIP;
-    const double excess = fr.trial_norm - limit;
+    const double excess = fr.trial_norm - limit, slip_length = excess / eps;
+    const double inv_trial = 1.0 / fr.trial_norm;
     for (int i = 0; i < 3; ++i) {
-      const double dir = fr.trial[i] / fr.trial_norm;
+      const double dir = fr.trial[i] * inv_trial;
       fr.T[i] = limit * dir;
-      fr.slip[i] = excess / eps * dir;
+      fr.slip[i] = slip_length * dir;
     }
-    fr.dissipation = limit * (excess / eps);
+    fr.dissipation = limit * slip_length;
   }
   fr.force_e1 = dot3(fr.T, fr.e1);
   fr.force_e2 = dot3(fr.T, fr.e2);
@@ -285,11 +298,12 @@ void friction_tangent(const Params& p, const FrictionContact& c, const FrictionR
   //   R X = ratio (X - that (that^T X)) in slip.
   double ratio = 1.0, that[3] = {0, 0, 0}, tg[3] = {0, 0, 0};
   if (slip) {
+    const double inv_trial = 1.0 / fr.trial_norm;
     for (int i = 0; i < 3; ++i) {
-      that[i] = fr.trial[i] / fr.trial_norm;
+      that[i] = fr.trial[i] * inv_trial;
       tg[i] = p.friction * fp * that[i];
     }
-    ratio = limit / fr.trial_norm;
+    ratio = limit * inv_trial;
   }
   auto apply_R = [&](double* X) {  // X = R X
     if (!slip) return;
