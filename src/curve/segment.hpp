@@ -62,7 +62,8 @@ class Segment {
     const double* M;
   };
   // Y = the sum over the n terms of M dx/dX (or M d(dx/dxi)/dX) on the
-  // slots in `used` (used_slots() of this segment), their 3x3 blocks one
+  // slots in `used` (used_slots() of this segment: every slot it reads
+  // must be there), their 3x3 blocks one
   // after the other in slot order (3 x 3k column-major for k slots; all
   // four: the 3x12 jacobian's layout): what forming each jacobian and
   // multiplying it would give, up to rounding, at a fraction of the cost.
