@@ -311,6 +311,68 @@ void Segment::jacobian(double xi, double* P) const {
 
 namespace {
 
+// out = the sum over t < n of c[stride t] terms[t].M (3x3), a pass per term
+// over the 9 entries (restrict: out is none of the M, the passes vectorise).
+void combine_terms(int n, const Segment::JacobianTerm* terms, const double* c, int stride,
+                   double* __restrict out) {
+  const double* __restrict M = terms[0].M;
+  for (int e = 0; e < 9; ++e) out[e] = c[0] * M[e];
+  for (int t = 1; t < n; ++t) {
+    const double ct = c[stride * t];
+    const double* __restrict Mt = terms[t].M;
+    for (int e = 0; e < 9; ++e) out[e] += ct * Mt[e];
+  }
+}
+
+}  // namespace
+
+void Segment::combine_jacobians(int n, const JacobianTerm* terms, unsigned used,
+                                double* Y) const {
+  // The weights of jacobians() at each term's xi: slot s's identity block
+  // wgt[s] (dwgt[s]) and end tangent k's h[k] (dh[k]).
+  double ws[kMaxJacobianTerms][4], wk[kMaxJacobianTerms][2];
+  for (int t = 0; t < n; ++t) {
+    const JacobianTerm& term = terms[t];
+    double* wgt = ws[t];
+    for (int s = 0; s < 4; ++s) wgt[s] = 0.0;
+    wk[t][0] = wk[t][1] = 0.0;
+    if (linear_kind_) {
+      wgt[1] = term.derivative ? -0.5 : 0.5 * (1.0 - term.xi);
+      wgt[2] = term.derivative ? 0.5 : 0.5 * (1.0 + term.xi);
+      continue;
+    }
+    const HermiteBasis hb(term.xi);
+    const double* h = term.derivative ? hb.dh : hb.h;
+    for (int k = 0; k < 4; ++k) {
+      if (term_[k].nonlinear)
+        wk[t][k / 2] = h[k];
+      else
+        for (int s = 0; s < 4; ++s) wgt[s] += h[k] * term_[k].coef[s];
+    }
+  }
+  double* block[4] = {nullptr, nullptr, nullptr, nullptr};  // the used slots' blocks in Y
+  double* y = Y;
+  for (int s = 0; s < 4; ++s) {
+    if (!(used & (1u << s))) continue;
+    block[s] = y;
+    y += 9;
+    bool read = false;  // a slot no term's linear part reads: a zero block
+    for (int t = 0; t < n; ++t) read = read || ws[t][s] != 0.0;
+    if (read)
+      combine_terms(n, terms, &ws[0][s], 4, block[s]);
+    else
+      for (int e = 0; e < 9; ++e) block[s][e] = 0.0;
+  }
+  for (int k = 1; k < 4; k += 2) {
+    if (!term_[k].nonlinear) continue;
+    double N[9];
+    combine_terms(n, terms, &wk[0][k / 2], 2, N);
+    tangent_of(k).add_product(N, block);
+  }
+}
+
+namespace {
+
 // Block (A, B) of the symmetric 9x9 Z of the node differences z_1..z_3, of
 // which only the upper triangle is stored (leading dimension 9), entry
 // (alpha, beta); zero outside z_1..z_3 and for (1, 3): no term couples z_1

@@ -54,6 +54,26 @@ class Segment {
   void jacobians(double xi, double* P, double* Pd) const;
   // P = dx/dX alone.
   void jacobian(double xi, double* P) const;
+  // One term of combine_jacobians: M (3x3, column-major) times dx/dX at xi,
+  // or times d(dx/dxi)/dX at xi (derivative).
+  struct JacobianTerm {
+    double xi;
+    bool derivative;
+    const double* M;
+  };
+  // Y = the sum over the n terms of M dx/dX (or M d(dx/dxi)/dX) on the
+  // slots in `used` (used_slots() of this segment: every slot it reads
+  // must be there), their 3x3 blocks one
+  // after the other in slot order (3 x 3k column-major for k slots; all
+  // four: the 3x12 jacobian's layout): what forming each jacobian and
+  // multiplying it would give, up to rounding, at a fraction of the cost.
+  // Every jacobian is a multiple of the identity per slot plus multiples of
+  // the nonlinear end tangents' jacobians, so the terms' M are summed first,
+  // into one 3x3 block per slot and one 3x3 factor per end tangent, and each
+  // end tangent's jacobian is multiplied once (TangentTerm::add_product).
+  // At most kMaxJacobianTerms terms (n >= 1).
+  static constexpr int kMaxJacobianTerms = 3;
+  void combine_jacobians(int n, const JacobianTerm* terms, unsigned used, double* Y) const;
   // Hx = w . d2x/dX2 and Hxd = w . d2(dx/dxi)/dX2, 12x12 column-major each,
   // exactly symmetric; Hxd may be null (not computed).
   void contracted_hessians(double xi, const double* w, double* Hx, double* Hxd) const;

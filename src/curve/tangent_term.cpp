@@ -136,6 +136,45 @@ void TangentTerm::jacobian() {
     }
 }
 
+void TangentTerm::add_product(const double* N, double* const Y[4]) const {
+  if (dir == Dir::Weighted) {
+    // The direction's blocks are general 3x3 matrices: N jac on the slots
+    // a, b, c (p and q are among them on every segment that has this rule).
+    for (int slot = 0; slot < 4; ++slot) {
+      if (slot != a && slot != b && slot != c && slot != p && slot != q) continue;
+      const double* J = jac + 9 * slot;
+      double* y = Y[slot];
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+          y[i + 3 * j] += N[i] * J[3 * j] + N[i + 3] * J[3 * j + 1] + N[i + 6] * J[3 * j + 2];
+    }
+    return;
+  }
+  // N E = sigma (N uhat) eL^T on the slots q (+) and p (-), as in jacobian().
+  double nu[3];
+  for (int i = 0; i < 3; ++i)
+    nu[i] = sigma * (N[i] * uhat_[0] + N[i + 3] * uhat_[1] + N[i + 6] * uhat_[2]);
+  // (Each block through a local copy: the compiler cannot know that the
+  // slots' blocks of Y do not overlap.)
+  auto add_to = [Y](int slot, const double* v, bool minus) {
+    double* y = Y[slot];
+    for (int k = 0; k < 9; ++k) y[k] = minus ? y[k] - v[k] : y[k] + v[k];
+  };
+  double v[9];
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) v[i + 3 * j] = nu[i] * eL_[j];
+  add_to(q, v, false);
+  add_to(p, v, true);
+  if (dir == Dir::Constant) return;
+  // Chord: N S = s (N - (N uhat) uhat^T) = s N - (L / r) nu uhat^T on the
+  // slots c (+) and a (-).
+  const double sc = sigma * L_ / r_, lr = L_ / r_;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) v[i + 3 * j] = sc * N[i + 3 * j] - lr * nu[i] * uhat_[j];
+  add_to(c, v, false);
+  add_to(a, v, true);
+}
+
 void TangentTerm::contraction(const double* w, double s, Contraction& out) const {
   // T = sigma L(d) uhat(u~), d = z_q, u~ = k0 u a function of (z_b, z_c):
   //   w . d2T = sigma [ (w.uhat) d2L + dL (x) g + g (x) dL + L w.d2uhat ],

@@ -35,6 +35,14 @@ struct TangentTerm {
   bool evaluate(const double* X);
   // Fills jac. Call after evaluate().
   void jacobian();
+  // Y += N dT/dX (N 3x3, column-major), Y the 3x12 result by slot: Y[s]
+  // its 3x3 block of slot s (column-major; null for a slot T does not
+  // read). N jac up to rounding, from the jacobian's parts where they are
+  // cheaper (the chord's blocks are multiples of S = sigma L (I - uhat
+  // uhat^T) / r and of the rank-one E = sigma uhat eL^T, so N S and N E are
+  // all the products; a constant direction has E alone), else on the slots
+  // jac lives on. Call after jacobian().
+  void add_product(const double* N, double* const Y[4]) const;
   // The contraction w . d2T in the node differences z_j = x_j - x_{j-1}
   // (j = 1..3; T depends on X only through them):
   //   Z += s * (w . d2T/dz2) on the upper triangle (row <= column),

@@ -87,23 +87,29 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   double PA[36], PAd[36], PB[36], PBd[36];
   sa.jacobians(k.xi, PA, PAd);
   sb.jacobians(k.eta, PB, PBd);
-  for (int c = 0; c < 12; ++c) {
-    out.residual[c] = -law.force * col_dot(PA, c, k.n);
-    out.residual[12 + c] = law.force * col_dot(PB, c, k.n);
-  }
   // Friction: + [P_A^T T; -P_B^T T]. mu = 0 skips all of it.
   const bool friction = params.friction > 0.0;
   const FrictionContact fc{&sa,       &sb,      k.xi,     k.eta,        k.pa.xd,
                            k.pa.xdd,  k.pb.xd,  k.n,      k.rho_signed, law.force,
                            law.slope, k.pb.xdd, k.end_a,  k.end_b,
                            k.held_a || k.held_b, ends.at_point ? B.radius : 0.0};
-  FrictionResult fr;
-  if (friction) {
-    fr = friction_force(params, fc, hist_old);
+  // (Built in place: friction_force's result is not copied.)
+  const FrictionResult fr = friction ? friction_force(params, fc, hist_old) : FrictionResult();
+  if (!fr.anchored) {  // (also a fresh contact with friction: T = 0, bit for bit)
     for (int c = 0; c < 12; ++c) {
-      out.residual[c] += col_dot(PA, c, fr.T);
-      out.residual[12 + c] -= col_dot(PB, c, fr.T);
+      out.residual[c] = -law.force * col_dot(PA, c, k.n);
+      out.residual[12 + c] = law.force * col_dot(PB, c, k.n);
     }
+  } else {
+    // Normal and friction force in one: [P_A^T w; -P_B^T w], w = T - f_N n.
+    double w[3];
+    for (int i = 0; i < 3; ++i) w[i] = fr.T[i] - law.force * k.n[i];
+    for (int c = 0; c < 12; ++c) {
+      out.residual[c] = col_dot(PA, c, w);
+      out.residual[12 + c] = -col_dot(PB, c, w);
+    }
+  }
+  if (friction) {
     for (int i = 0; i < 3; ++i) {
       info[B2B_INFO_TANGENTIAL_FORCE + i] = fr.T[i];
       info[B2B_INFO_SLIP + i] = fr.slip[i];

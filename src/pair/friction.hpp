@@ -74,7 +74,8 @@ FrictionResult friction_force(const Params& p, const FrictionContact& c, const d
 // an anchored contact (fr.anchored), normal and friction parts, except the
 // curves' second derivatives in X, which the caller adds with the weights
 // T - f_N n (beam A) and its negative (beam B). PAd, PBd: the 3x12
-// jacobians of x_A,xi and x_B,eta at the contact.
+// jacobians of x_A,xi and x_B,eta at the contact (read with the surface
+// anchor only; otherwise their rows in lin and the segments serve).
 void friction_tangent(const Params& p, const FrictionContact& c, const FrictionResult& fr,
                       const Linearization& lin, const double* PAd, const double* PBd,
                       double* Kc);

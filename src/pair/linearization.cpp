@@ -7,12 +7,12 @@ namespace pair {
 namespace {
 
 // The used columns of one beam (P, Pd its 3x12 jacobians; J = [P_A, -P_B]),
-// from row k of lin on: their indices, J and (in q) the columns of Pd, as
+// from row k of lin on: their indices, J and Q (the columns of Pd), as
 // rows of the compact arrays. Returns the next row; clears axial unless
 // every column of P lies along its own axis.
 template <bool kOnA>
-int gather_beam(unsigned used, const double* P, const double* Pd, Linearization& lin,
-                double* qx, double* qy, double* qz, int k, bool& axial) {
+int gather_beam(unsigned used, const double* P, const double* Pd, Linearization& lin, int k,
+                bool& axial) {
   const double sign = kOnA ? 1.0 : -1.0;
   for (int slot = 0; slot < 4; ++slot) {
     if (!(used & (1u << slot))) continue;
@@ -24,9 +24,9 @@ int gather_beam(unsigned used, const double* P, const double* Pd, Linearization&
       lin.Jx[k] = sign * p[0];
       lin.Jy[k] = sign * p[1];
       lin.Jz[k] = sign * p[2];
-      qx[k] = pd[0];
-      qy[k] = pd[1];
-      qz[k] = pd[2];
+      lin.Qx[k] = pd[0];
+      lin.Qy[k] = pd[1];
+      lin.Qz[k] = pd[2];
       const int i1 = i == 2 ? 0 : i + 1, i2 = i == 0 ? 2 : i - 1;
       axial = axial && p[i1] == 0.0 && p[i2] == 0.0;
     }
@@ -40,8 +40,7 @@ int gather_beam(unsigned used, const double* P, const double* Pd, Linearization&
 //   B: B0 = J.ta,        B1 = -J.tb - Pd.d, bv = -Pd.n
 // (J = -P_B on B: -P_B.ta is J.ta exactly), and C = H^-1 B.
 template <bool kOnA>
-void linearize_rows(const ContactGeometry& geo, double inv_det, const double* __restrict qx,
-                    const double* __restrict qy, const double* __restrict qz, int k0, int k1,
+void linearize_rows(const ContactGeometry& geo, double inv_det, int k0, int k1,
                     Linearization& lin) {
   const double n0 = geo.n[0], n1 = geo.n[1], n2 = geo.n[2];
   const double ta0 = geo.ta[0], ta1 = geo.ta[1], ta2 = geo.ta[2];
@@ -52,6 +51,9 @@ void linearize_rows(const ContactGeometry& geo, double inv_det, const double* __
   const double* __restrict Jx = lin.Jx;
   const double* __restrict Jy = lin.Jy;
   const double* __restrict Jz = lin.Jz;
+  const double* __restrict qx = lin.Qx;
+  const double* __restrict qy = lin.Qy;
+  const double* __restrict qz = lin.Qz;
   double* __restrict g = lin.g;
   double* __restrict B0 = lin.B0;
   double* __restrict B1 = lin.B1;
@@ -83,12 +85,14 @@ void linearize(unsigned used_a, unsigned used_b, const ContactGeometry& geo, Lin
   const double inv_det = geo.inv_unit * geo.inv_unit / geo.det;  // H is in units of unit^2
   for (int i = 0; i < 3; ++i) lin.n[i] = geo.n[i];
   bool axial = true;
-  double qx[kNdof], qy[kNdof], qz[kNdof];
-  const int ma = gather_beam<true>(used_a, geo.PA, geo.PAd, lin, qx, qy, qz, 0, axial);
-  lin.m = gather_beam<false>(used_b, geo.PB, geo.PBd, lin, qx, qy, qz, ma, axial);
+  const int ma = gather_beam<true>(used_a, geo.PA, geo.PAd, lin, 0, axial);
+  lin.m_a = ma;
+  lin.used_a = used_a;
+  lin.used_b = used_b;
+  lin.m = gather_beam<false>(used_b, geo.PB, geo.PBd, lin, ma, axial);
   lin.axial = axial;
-  linearize_rows<true>(geo, inv_det, qx, qy, qz, 0, ma, lin);
-  linearize_rows<false>(geo, inv_det, qx, qy, qz, ma, lin.m, lin);
+  linearize_rows<true>(geo, inv_det, 0, ma, lin);
+  linearize_rows<false>(geo, inv_det, ma, lin.m, lin);
 }
 
 }  // namespace pair

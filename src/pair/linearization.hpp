@@ -16,8 +16,11 @@ constexpr int kNdof = 24;
 
 struct Linearization {
   int m = 0;          // number of used columns
+  int m_a = 0;        // of which A's (the first m_a)
+  unsigned used_a = 0, used_b = 0;  // the slots they come from (curve::used_slots)
   int cols[kNdof];    // their indices in 0..23
   double Jx[kNdof], Jy[kNdof], Jz[kNdof];  // rows of J
+  double Qx[kNdof], Qy[kNdof], Qz[kNdof];  // rows of [P_A,xi, P_B,eta] (no sign, unlike J)
   double g[kNdof];    // dg/dX = n . J (unsigned distance; the caller's sign is in n)
   double B0[kNdof], B1[kNdof];  // B = d(grad phi)/dX
   double C0[kNdof], C1[kNdof];  // H^-1 B: dxi/dX = -C0, deta/dX = -C1
