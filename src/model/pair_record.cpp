@@ -9,7 +9,7 @@ namespace model {
 
 size_t record_length(int status, bool committed, int hist_len) {
   switch (status) {
-    case B2B_CONTACT_ACTIVE: return kRecHistory + hist_len + pair::kInfoLength + pair::kNdof;
+    case B2B_CONTACT_ACTIVE:
     case B2B_CONTACT_OPEN: return kRecHistory + hist_len;
     case B2B_CONTACT_OUTSIDE: return committed ? 2 : 0;
     default: return 0;
@@ -31,10 +31,6 @@ void write_record(const pair::PairResult& res, bool committed, const double* his
   for (int i = 0; i < 3; ++i)
     rec[kRecDiff + i] = res.info[B2B_INFO_POINT_A + i] - res.info[B2B_INFO_POINT_B + i];
   std::memcpy(rec + kRecHistory, hist, sizeof(double) * hist_len);
-  if (st != B2B_CONTACT_ACTIVE) return;
-  double* info = rec + kRecHistory + hist_len;
-  std::memcpy(info, res.info, sizeof res.info);
-  std::memcpy(info + pair::kInfoLength, res.residual, sizeof res.residual);
 }
 
 }  // namespace model

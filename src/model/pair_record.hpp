@@ -4,10 +4,10 @@
 // each (info, residual, history: ~550 bytes) made the update's memory grow
 // with the pairs looked at, not with the contacts. A record holds only what
 // a later stage of the update reads, in doubles:
-//   ACTIVE   the gap, the difference of the closest points (A - B), the new
-//            history, the info and the residual (the contact's outputs)
-//   OPEN     the gap, the difference of the closest points, the new history
-//            (the trial state keeps it: the normal's sign is tracked)
+//   ACTIVE,  the gap, the difference of the closest points (A - B), the new
+//   OPEN     history (the trial state keeps it: the normal's sign is
+//            tracked); an active contact's outputs (info, residual, tangent)
+//            go straight to the model's next set (contact_result.hpp)
 //   OUTSIDE  of a pair with a committed history: xi, eta (where the
 //            handover of its committed contact starts)
 //   others   no record
@@ -26,7 +26,7 @@ namespace model {
 enum RecordSlot : int {
   kRecGap = 0,      // ACTIVE, OPEN
   kRecDiff = 1,     // 3 entries: POINT_A - POINT_B
-  kRecHistory = 4,  // the new history (hist_len), then for ACTIVE info and residual
+  kRecHistory = 4,  // the new history (hist_len)
   kRecXi = 0,       // OUTSIDE
   kRecEta = 1
 };
@@ -39,13 +39,6 @@ size_t record_length(int status, bool committed, int hist_len);
 // history (res.history, or a line pair's histories).
 void write_record(const pair::PairResult& res, bool committed, const double* hist, int hist_len,
                   double* rec);
-
-inline const double* record_info(const double* rec, int hist_len) {
-  return rec + kRecHistory + hist_len;
-}
-inline const double* record_residual(const double* rec, int hist_len) {
-  return record_info(rec, hist_len) + pair::kInfoLength;
-}
 
 }  // namespace model
 }  // namespace b2b
