@@ -148,10 +148,11 @@ class Model {
   // cost their beams, not their square)
   std::vector<std::pair<uint64_t, int>> gp_of_groups_;
   double margin_ = 0.0, g0_max_ = 0.0;
-  // broad phase
+  // broad phase: the grown boxes and their index live only while a search
+  // runs (update.cpp, broad_phase)
   std::vector<Box> search_boxes_;
   BoxTree tree_;
-  std::vector<std::pair<int, int>> candidates_;
+  PairRows candidates_;  // the pairs (a, b), a < b, in order
   std::vector<double> build_coords_;  // coordinates at the last build
   int builds_ = 0;
   // states
@@ -210,7 +211,7 @@ class Model {
   const std::vector<double>& current_coords() const { return current_coords_; }
   const std::vector<double>& committed_coords() const { return committed_coords_; }
   const NodeIndex& used_index() const { return used_index_; }
-  const std::vector<std::pair<int, int>>& candidates() const { return candidates_; }
+  const PairRows& candidates() const { return candidates_; }
 };
 
 }  // namespace model

@@ -102,7 +102,7 @@ class Updater {
   // Histories made for pairs that crossed (committed normals; for line
   // pairs committed_line_histories): their hist_old.
   std::vector<std::vector<double>> synthetic_;
-  std::vector<std::pair<int, int>> new_candidates_;
+  PairRows new_candidates_;
   bool rebuilt_ = false;
   // Committed active contacts that are not candidates (evaluated whatever
   // the boxes say), in key order.
@@ -125,9 +125,7 @@ class Updater {
   CommittedView view_;
   std::vector<Migrant> migrants_;
   const std::vector<Box>& search_boxes() const { return has_committed_ ? ws_.swept : ws_.boxes; }
-  const std::vector<std::pair<int, int>>& candidates() const {
-    return rebuilt_ ? new_candidates_ : m_.candidates_;
-  }
+  const PairRows& candidates() const { return rebuilt_ ? new_candidates_ : m_.candidates_; }
 
   int nt() const {
 #ifdef B2B_HAVE_OPENMP
@@ -141,10 +139,10 @@ class Updater {
   void sweep_boxes();
   void broad_phase();
   bool near(int a, int b, int gp) const;
-  // Work item k of the evaluation (a candidate, then an extra) as an item
-  // to evaluate: false if it is not evaluated (apart and no committed
-  // contact); *is_near: a candidate within contact reach.
-  bool work_item(size_t k, Item& it, bool* is_near) const;
+  // Work item k of the evaluation (a candidate, (a, b), then an extra) as
+  // an item to evaluate: false if it is not evaluated (apart and no
+  // committed contact); *is_near: a candidate within contact reach.
+  bool work_item(size_t k, int a, int b, Item& it, bool* is_near) const;
   // The element on one pair: res, and a line pair's new histories in
   // line_hist (buffers of the caller, reused from pair to pair). Its
   // segments come from cache; false (fail, *bad: the segment) when one
@@ -385,6 +383,11 @@ void Updater::broad_phase() {
         return true;
       },
       m_.threads, new_candidates_);
+  // The candidates hold the pairs now: the search's index, its own copy of
+  // the pairs and the grown boxes go before the evaluation allocates (issue
+  // 20: 1 kB per segment of the bundle, held from update to update before).
+  m_.tree_.release();
+  std::vector<Box>().swap(grown);
 }
 
 // Whether the candidate (a, b) of group pair gp is within contact reach.
@@ -397,23 +400,22 @@ bool Updater::near(int a, int b, int gp) const {
   return box_distance(search_boxes()[a], search_boxes()[b]) <= reach;
 }
 
-bool Updater::work_item(size_t k, Item& it, bool* is_near) const {
-  const std::vector<std::pair<int, int>>& cand = candidates();
+bool Updater::work_item(size_t k, int a, int b, Item& it, bool* is_near) const {
+  const size_t n_cand = candidates().size();
   *is_near = false;
   const StoredPair* sp;
-  if (k < cand.size()) {
-    const std::pair<int, int>& c = cand[k];
-    const int gp = m_.group_pair_index(c.first, c.second);
-    *is_near = near(c.first, c.second, gp);
-    sp = view_.state->find(pair_key(c.first, c.second));
+  if (k < n_cand) {
+    const int gp = m_.group_pair_index(a, b);
+    *is_near = near(a, b, gp);
+    sp = view_.state->find(pair_key(a, b));
     // The contacts of the last commit are evaluated whatever the boxes say:
     // their pair tells where the point went.
     if (!*is_near && !(sp && sp->status == B2B_CONTACT_ACTIVE)) return false;
-    it.a = c.first;
-    it.b = c.second;
+    it.a = a;
+    it.b = b;
     it.gp = gp;
   } else {
-    sp = extras_[k - cand.size()];
+    sp = extras_[k - n_cand];
     it.gp = sp->group_pair;
   }
   // A pair with a committed history keeps its orientation and reads it.
@@ -608,14 +610,21 @@ void Updater::evaluate_chunk(int c, size_t n_work, SegmentCache& cache, UpdateTa
                              pair::PairResult& res, double* K) {
   const size_t begin = static_cast<size_t>(c) * kChunk;
   const size_t end = std::min(n_work, begin + kChunk);
-  const size_t n_cand = candidates().size();
+  const PairRows& cand = candidates();
+  const size_t n_cand = cand.size();
   // Room for every item of the chunk; what it does not keep is given back.
   Item* kept = pages.kept.take(end - begin);
   int n_kept = 0, kept_candidates = 0;
+  int a = begin < n_cand ? cand.row_of(begin) : -1;  // the row of candidate k
   for (size_t k = begin; k < end; ++k) {
+    int b = -1;
+    if (k < n_cand) {
+      while (static_cast<size_t>(cand.start[a + 1]) <= k) ++a;
+      b = cand.partner[k];
+    }
     Item it;
     bool is_near;
-    if (!work_item(k, it, &is_near)) continue;
+    if (!work_item(k, a, b, it, &is_near)) continue;
     tally.near += is_near;
     ++tally.evaluated;
     curve::Failure fail;
@@ -642,12 +651,11 @@ Problem Updater::evaluate_all() {
   fresh_.assign(pair::kHistoryLengthMax, 0.0);
   // The committed contacts that the candidates do not hold (both lists are
   // in key order: the search returns its pairs sorted, a < b).
-  const std::vector<std::pair<int, int>>& cand = candidates();
+  const PairRows& cand = candidates();
   extras_.clear();
   for (const StoredPair& sp : view_.state->pairs) {
     if (sp.status != B2B_CONTACT_ACTIVE) continue;
-    const std::pair<int, int> c(std::min(sp.a, sp.b), std::max(sp.a, sp.b));
-    if (!std::binary_search(cand.begin(), cand.end(), c)) extras_.push_back(&sp);
+    if (cand.find(std::min(sp.a, sp.b), std::max(sp.a, sp.b)) < 0) extras_.push_back(&sp);
   }
   const size_t n_work = cand.size() + extras_.size();
   const int n_chunks = static_cast<int>((n_work + kChunk - 1) / kChunk);
@@ -807,19 +815,19 @@ Problem Updater::crossed_line_pair(Item& it) {
 // exactly that status (handovers are rare: a contact crossing a joint).
 Problem Updater::unkept_status(int a, int b, int* status) {
   *status = -1;
-  const std::vector<std::pair<int, int>>& cand = candidates();
-  const std::pair<int, int> c(std::min(a, b), std::max(a, b));
-  const auto at = std::lower_bound(cand.begin(), cand.end(), c);
+  const int lo = std::min(a, b), hi = std::max(a, b);
+  const int64_t at = candidates().find(lo, hi);
   Item it;
   bool is_near = false;
-  if (at != cand.end() && *at == c) {
-    if (!work_item(static_cast<size_t>(at - cand.begin()), it, &is_near)) return Problem();
+  if (at >= 0) {
+    if (!work_item(static_cast<size_t>(at), lo, hi, it, &is_near)) return Problem();
   } else {
-    const auto ex = std::find_if(extras_.begin(), extras_.end(), [&c](const StoredPair* sp) {
-      return pair_key(sp->a, sp->b) == pair_key(c.first, c.second);
+    const auto ex = std::find_if(extras_.begin(), extras_.end(), [lo, hi](const StoredPair* sp) {
+      return pair_key(sp->a, sp->b) == pair_key(lo, hi);
     });
     if (ex == extras_.end()) return Problem();
-    work_item(candidates().size() + static_cast<size_t>(ex - extras_.begin()), it, &is_near);
+    work_item(candidates().size() + static_cast<size_t>(ex - extras_.begin()), -1, -1, it,
+              &is_near);
   }
   pair::PairResult res;
   std::vector<double> line_hist;
@@ -1014,7 +1022,7 @@ void Updater::finish() {
   ws_.records.release_unused();
   ws_.results.release_unused();
   if (rebuilt_) {
-    m.candidates_.swap(new_candidates_);
+    std::swap(m.candidates_, new_candidates_);
     m.build_coords_.swap(build_coords);
     ++m.builds_;
   }
