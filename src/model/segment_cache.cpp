@@ -65,11 +65,13 @@ int SegmentCache::choose_sets(const PairRows& candidates, int n_segments, int th
       const size_t begin = windows == 1 ? 0 : w * ((n - kWindow) / (kWindows - 1));
       const size_t end = std::min(n, begin + kWindow);
       CacheSimulation sim(sets);
+      const int64_t* start = candidates.start.data();
+      const int* partner = candidates.partner.data();
       int a = begin < n ? candidates.row_of(begin) : 0;
       for (size_t k = begin; k < end; ++k) {
-        while (static_cast<size_t>(candidates.start[a + 1]) <= k) ++a;
+        while (static_cast<size_t>(start[a + 1]) <= k) ++a;
         const int held = sim.request(a, -1, m);
-        sim.request(candidates.partner[k], held, m);
+        sim.request(partner[k], held, m);
       }
     }
     sizes.push_back(sets);

@@ -21,6 +21,8 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <memory>
+#include <new>
 
 #include <b2b/b2b.h>
 
@@ -82,7 +84,7 @@ class Updater {
   Updater(Model& m, const double* x, int ldx, const double* u, int ldu, bool want_tangent)
       : m_(m), ws_(m.workspace_), x_(x), u_(u), ldx_(ldx), ldu_(ldu),
         want_tangent_(want_tangent), margin_(m.effective_margin()), items_(ws_.items),
-        serial_kept_(ws_.kept), serial_recs_(ws_.records), serial_results_(ws_.results) {}
+        serial_scratch_(ws_.scratch), serial_results_(ws_.results) {}
   Problem run();
 
  private:
@@ -114,8 +116,7 @@ class Updater {
   int evaluated_ = 0, near_ = 0;
   // The items, records and results of the pairs evaluated after the
   // parallel stage (crossing, handover), in the same pages as the threads'.
-  PageCursor<Item> serial_kept_;
-  PageCursor<double> serial_recs_, serial_results_;
+  PageCursor<double> serial_scratch_, serial_results_;
   std::vector<double> fresh_;             // zeros: a fresh history
   int hops_ = 0, lost_ = 0;
   // [partition] the committed state the evaluation and the handovers read
@@ -167,8 +168,7 @@ class Updater {
   Problem evaluate_all();
   // The pages one thread of the evaluation writes to.
   struct Cursors {
-    PageCursor<Item> kept;
-    PageCursor<double> recs, results;
+    PageCursor<double> scratch, results;
   };
   void evaluate_chunk(int c, size_t n_work, SegmentCache& cache, UpdateTally& tally,
                       Cursors& pages, std::vector<double>& line_hist, pair::PairResult& res,
@@ -525,10 +525,28 @@ bool Updater::settle(Item& item, const pair::PairResult& res,
   item.result = nullptr;
   item.form = TangentForm::None;
   const bool committed = item.hist_old != nullptr;
-  const size_t len = record_length(item.status, committed, item.hist_len);
+  // The crossing check's first test (crossed_pairs), on the axis distance
+  // of the closest points, as it would make it from the record.
+  item.crossing = false;
+  if (has_committed_ && !committed &&
+      (item.status == B2B_CONTACT_ACTIVE || item.status == B2B_CONTACT_OPEN)) {
+    double rho;
+    if (gp.line) {
+      rho = res.info[B2B_INFO_GAP] + m_.table_.segment(item.a).radius +
+            m_.table_.segment(item.b).radius;
+    } else {
+      double d[3];
+      for (int i = 0; i < 3; ++i) d[i] = res.info[B2B_INFO_POINT_A + i] - res.info[B2B_INFO_POINT_B + i];
+      rho = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    item.crossing = may_have_crossed(ws_.motion, item.a, item.b, rho);
+  }
+  const bool with_diff = item.crossing && !gp.line;
+  const size_t len = record_length(item.status, committed, item.hist_len, with_diff);
   if (len > 0) {
     double* rec = recs.take(len);
-    write_record(res, committed, gp.line ? line_hist.data() : res.history, item.hist_len, rec);
+    write_record(res, committed, gp.line ? line_hist.data() : res.history, item.hist_len,
+                 with_diff, rec);
     item.rec = rec;
   }
   if (item.status == B2B_CONTACT_ACTIVE) {
@@ -544,7 +562,7 @@ bool Updater::settle(Item& item, const pair::PairResult& res,
 // handover).
 void Updater::settle_alone(Item& item, const pair::PairResult& res,
                            const std::vector<double>& line_hist, const double* K) {
-  settle(item, res, line_hist, K, serial_recs_, serial_results_);
+  settle(item, res, line_hist, K, serial_scratch_, serial_results_);
 }
 
 Problem Updater::segment_problem(int s, const curve::Failure& f) const {
@@ -612,15 +630,20 @@ void Updater::evaluate_chunk(int c, size_t n_work, SegmentCache& cache, UpdateTa
   const size_t end = std::min(n_work, begin + kChunk);
   const PairRows& cand = candidates();
   const size_t n_cand = cand.size();
-  // Room for every item of the chunk; what it does not keep is given back.
-  Item* kept = pages.kept.take(end - begin);
+  // The chunk's kept items, copied to its thread's page at the end (its
+  // records are cut from the same page meanwhile).
+  Item kept[kChunk];
   int n_kept = 0, kept_candidates = 0;
+  // The rows walked with pointers of their own: writes through kept and
+  // tally could otherwise alias the vectors' and force their reload.
+  const int64_t* start = cand.start.data();
+  const int* partner = cand.partner.data();
   int a = begin < n_cand ? cand.row_of(begin) : -1;  // the row of candidate k
   for (size_t k = begin; k < end; ++k) {
     int b = -1;
     if (k < n_cand) {
-      while (static_cast<size_t>(cand.start[a + 1]) <= k) ++a;
-      b = cand.partner[k];
+      while (static_cast<size_t>(start[a + 1]) <= k) ++a;
+      b = partner[k];
     }
     Item it;
     bool is_near;
@@ -636,15 +659,16 @@ void Updater::evaluate_chunk(int c, size_t n_work, SegmentCache& cache, UpdateTa
       }
       continue;
     }
-    if (!settle(it, res, line_hist, want_tangent_ ? K : nullptr, pages.recs, pages.results)) {
+    if (!settle(it, res, line_hist, want_tangent_ ? K : nullptr, pages.scratch, pages.results)) {
       ++tally.counts[count_slot(it.status)];
       continue;
     }
     kept[n_kept++] = it;
     kept_candidates += k < n_cand;
   }
-  pages.kept.give_back(end - begin - static_cast<size_t>(n_kept));
-  ws_.chunks[c] = UpdateChunk{kept, n_kept, kept_candidates};
+  Item* to = n_kept ? take_items(pages.scratch, static_cast<size_t>(n_kept)) : nullptr;
+  std::uninitialized_copy(kept, kept + n_kept, to);
+  ws_.chunks[c] = UpdateChunk{to, n_kept, kept_candidates};
 }
 
 Problem Updater::evaluate_all() {
@@ -667,8 +691,7 @@ Problem Updater::evaluate_all() {
   for (SegmentCache& cache : ws_.caches) cache.reset(ws_.cache_sets);
   // The workspace's pages, written again from their start; the results'
   // are not the model's (it holds the other set until this update ends).
-  ws_.kept.rewind();
-  ws_.records.rewind();
+  ws_.scratch.rewind();
   ws_.results.rewind();
   reserve_afresh(ws_.chunks, static_cast<size_t>(n_chunks));
   ws_.chunks.resize(n_chunks);
@@ -686,8 +709,7 @@ Problem Updater::evaluate_all() {
     SegmentCache& cache = ws_.caches[t];
     UpdateTally& tally = ws_.tallies[t];
     // A thread's pages and buffers, reused from chunk to chunk.
-    Cursors pages{PageCursor<Item>(ws_.kept), PageCursor<double>(ws_.records),
-                  PageCursor<double>(ws_.results)};
+    Cursors pages{PageCursor<double>(ws_.scratch), PageCursor<double>(ws_.results)};
     std::vector<double> line_hist;
     pair::PairResult res;
     double K[pair::kNdof * pair::kNdof];
@@ -747,16 +769,14 @@ Problem Updater::crossed_pairs() {
   if (!has_committed_) return Problem();
   for (Item* p : items_) {
     Item& it = *p;
-    const int st = it.status;
-    if (it.hist_old || (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN)) continue;
+    // Active or open, no committed history, and moved far enough (settle()
+    // made the first test on its closest points).
+    if (!it.crossing) continue;
     if (m_.group_pairs_[it.gp].line) {
       if (Problem pb = crossed_line_pair(it); pb.status) return pb;
       continue;
     }
-    const double* d = it.rec + kRecDiff;
-    if (!may_have_crossed(ws_.motion, it.a, it.b,
-                          std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
-      continue;
+    const double* d = record_diff(it.rec, it.hist_len);
     const GroupPair& gp = m_.group_pairs_[it.gp];
     // Only pairs that moved this far need one (rare within Newton's
     // iterations).
@@ -795,9 +815,6 @@ Problem Updater::evaluate_with(Item& it, std::vector<double> hist) {
 // (sign tracking). The same side: the same result as without it.
 Problem Updater::crossed_line_pair(Item& it) {
   const GroupPair& gp = m_.group_pairs_[it.gp];
-  const double rho = it.rec[kRecGap] + m_.table_.segment(it.a).radius +
-                     m_.table_.segment(it.b).radius;
-  if (!may_have_crossed(ws_.motion, it.a, it.b, rho)) return Problem();
   const int hl = gp.hist_len;
   const int n = it.hist_len / hl - 1;
   std::vector<double> h(it.hist_len);
@@ -923,8 +940,8 @@ Problem Updater::handovers() {
             --unkept_[count_slot(old)];
           else
             ++evaluated_;
-          Item* slot = serial_kept_.take(1);
-          *slot = trial;
+          Item* slot = take_items(serial_scratch_, 1);
+          new (slot) Item(trial);
           added.push_back(slot);
         }
         found = true;
@@ -1018,8 +1035,7 @@ void Updater::finish() {
   // Nothing below allocates: the model changes all at once. The pages this
   // update did not use are freed: the workspace holds what the last update
   // needed, not the most any update did.
-  ws_.kept.release_unused();
-  ws_.records.release_unused();
+  ws_.scratch.release_unused();
   ws_.results.release_unused();
   if (rebuilt_) {
     std::swap(m.candidates_, new_candidates_);

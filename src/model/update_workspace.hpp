@@ -35,6 +35,10 @@ struct UpdateItem {
   int8_t status = -1;     // B2B_CONTACT_* of its evaluation
   bool overflow = false;  // an output of the element is not finite
   TangentForm form = TangentForm::None;  // of its result's tangent
+  // The crossing check reads it (no committed history, and it moved far
+  // enough since the commit: crossing.hpp); its record has the difference
+  // of its closest points.
+  bool crossing = false;
   // Lengths of its committed and of its new history: a line pair
   // (GroupPair::line) has (n + 1) point histories for n integration points.
   int hist_old_len = 0;
@@ -44,6 +48,17 @@ struct UpdateItem {
   const double* result = nullptr;    // ACTIVE: its outputs (contact_result.hpp)
   uint64_t key() const { return pair_key(a, b); }
 };
+
+// Items share the records' pages (one partial page a thread less): the
+// doubles an item takes there.
+constexpr size_t kItemDoubles = sizeof(UpdateItem) / sizeof(double);
+static_assert(sizeof(UpdateItem) % sizeof(double) == 0 && alignof(UpdateItem) <= alignof(double),
+              "an item fills whole doubles of a page");
+
+// Room for n items in the pages of c (constructed by the caller).
+inline UpdateItem* take_items(PageCursor<double>& c, size_t n) {
+  return reinterpret_cast<UpdateItem*>(c.take(n * kItemDoubles));
+}
 
 // What one chunk of the update's evaluation keeps: its kept pairs, in
 // work-item order, contiguous in the page of the thread that evaluated it
@@ -92,13 +107,13 @@ struct UpdateWorkspace {
   // counts.
   std::vector<UpdateChunk> chunks;
   std::vector<UpdateTally> tallies;
-  // The pages the threads write into: the kept pairs, their records (read
-  // until the update ends), and the active contacts' outputs. `results` is
-  // the model's next set: an update that succeeds swaps it with the
-  // model's (Model::results_), whose pages this one reuses next time.
-  PagePool<UpdateItem> kept;
-  PagePool<double> records, results;
-  // The kept pairs in key order (in the pages of `kept`).
+  // The pages the threads write into: the kept pairs and their records
+  // (scratch, read until the update ends), and the active contacts'
+  // outputs. `results` is the model's next set: an update that succeeds
+  // swaps it with the model's (Model::results_), whose pages this one
+  // reuses next time.
+  PagePool<double> scratch, results;
+  // The kept pairs in key order (in the pages of `scratch`).
   std::vector<UpdateItem*> items;
   // The model's next trial state and contacts, swapped in likewise.
   ContactState trial;
