@@ -11,6 +11,7 @@
  *            of length 0.5: the hard case for point-wise contact and search.
  *
  *   model_scaling [--quick] [--search-only] [--max N] [--scene network|bundle]
+ *                 [--trace-memory]
  *
  * Sizes 10^3 .. 10^6 segments (--quick: 10^3 and 10^4, the ctest smoke test,
  * one repetition, the bundle's model updates at 10^3 only; --max N: sizes up
@@ -32,6 +33,12 @@
  *     and 2, the active contacts, and the peak memory of creating the model
  *     and its first update (VmHWM after minus VmRSS before, from
  *     /proc/self/status, the peak reset through /proc/self/clear_refs).
+ * --trace-memory prints a line after each model update of a row (its
+ * threads, its coordinates, its active contacts): the peak and the current
+ * resident memory since the row's model was created, and the allocator's
+ * bytes in use and free in its heaps (glibc's mallinfo2), each per segment:
+ * where the peak over all updates comes from (doc/guide-model.md,
+ * "Scaling").
  * It prints the two tables in Markdown, the fitted exponent of the search
  * build time against the segment count (least squares on log-log; goal
  * <= 1.15; also against the candidate pairs, which grow a little with the
@@ -323,6 +330,43 @@ bool reset_peak() {  // Linux >= 4.0: "5" resets VmHWM to the current RSS
   return std::fclose(f) == 0 && ok;
 }
 
+// --trace-memory: one line after a model update (threads 0: the default;
+// rss0: resident kB before the model was created, heap0: the allocator's
+// bytes in use then).
+bool g_trace_memory = false;
+double heap_in_use() {
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 33)
+  const struct mallinfo2 mi = mallinfo2();  // all arenas, and the mmapped blocks
+  return static_cast<double>(mi.uordblks + mi.hblkhd);
+#else
+  return -1;
+#endif
+}
+void trace_memory(const char* scene, int n, int update, int threads, const char* coords,
+                  b2b_model* m, long rss0, double heap0) {
+  if (!g_trace_memory) return;
+  char msg[256];
+  int counts[16];
+  check(b2b_model_stats(m, counts, nullptr, msg, sizeof msg), "b2b_model_stats", msg);
+  const double per = 1024.0 / n;
+  char thr[32] = "default threads";
+  if (threads > 0) std::snprintf(thr, sizeof thr, "%d thread%s", threads, threads == 1 ? "" : "s");
+  std::printf("memory trace: %s %d, update %d (%s, %s coordinates): %d active; "
+              "B/seg: peak %.0f, resident %.0f",
+              scene, n, update, thr, coords,
+              counts[B2B_COUNT_ACTIVE], per * (status_kb("VmHWM:") - rss0),
+              per * (status_kb("VmRSS:") - rss0));
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 33)
+  const struct mallinfo2 mi = mallinfo2();
+  std::printf(", heap in use %.0f, free in the heap %.0f", (heap_in_use() - heap0) / n,
+              static_cast<double>(mi.fordblks) / n);
+#else
+  (void)heap0;
+#endif
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
 long mem_available_kb() {  // /proc/meminfo MemAvailable (a huge value if unknown)
   FILE* f = std::fopen("/proc/meminfo", "r");
   long v = -1;
@@ -399,7 +443,8 @@ double active_pair_cost(b2b_model* m, const b2b_params* params, const double* x)
   return best;
 }
 
-ModelRun run_model(const Scene& sc, const b2b_params* params, int reps, bool peak_ok) {
+ModelRun run_model(const Scene& sc, const b2b_params* params, int reps, bool peak_ok,
+                   const char* scene = nullptr) {
   char msg[256];
   ModelRun r;
   const int n_nodes = sc.n_nodes();
@@ -416,6 +461,7 @@ ModelRun run_model(const Scene& sc, const b2b_params* params, int reps, bool pea
   malloc_trim(0);
   if (peak_ok) peak_ok = reset_peak();
   const long rss0 = status_kb("VmRSS:");
+  const double heap0 = heap_in_use();
   b2b_model* m = nullptr;
   check(b2b_model_create(&m, msg, sizeof msg), "b2b_model_create", msg);
   int first = 0;
@@ -439,6 +485,8 @@ ModelRun run_model(const Scene& sc, const b2b_params* params, int reps, bool pea
   check(b2b_model_update(m, sc.x.data(), 3, n_nodes, 1, msg, sizeof msg), "b2b_model_update",
         msg);
   r.t_first = now_s() - t0;
+  int update = 0;
+  if (scene) trace_memory(scene, sc.n_segments(), update++, 0, "the scene's", m, rss0, heap0);
   const long hwm_first = status_kb("VmHWM:");
   if (peak_ok && rss0 > 0 && hwm_first > 0)
     r.mem_bytes = 1024.0 * static_cast<double>(hwm_first - rss0);
@@ -461,6 +509,9 @@ ModelRun run_model(const Scene& sc, const b2b_params* params, int reps, bool pea
       check(b2b_model_update(m, xk.data(), 3, n_nodes, 1, msg, sizeof msg), "b2b_model_update",
             msg);
       best = std::min(best, now_s() - t0);
+      if (scene)
+        trace_memory(scene, sc.n_segments(), update++, t + 1, k % 2 ? "moved (2)" : "moved (1)",
+                     m, rss0, heap0);
       check(b2b_model_stats(m, counts, totals, msg, sizeof msg), "b2b_model_stats", msg);
       if (counts[B2B_COUNT_SEARCH_BUILDS] != builds) fail("an update on moved coordinates rebuilt the search");
     }
@@ -547,6 +598,8 @@ int main(int argc, char** argv) {
       quick = true;
     } else if (std::strcmp(argv[k], "--search-only") == 0) {
       search_only = true;
+    } else if (std::strcmp(argv[k], "--trace-memory") == 0) {
+      g_trace_memory = true;
     } else if (std::strcmp(argv[k], "--max") == 0 && k + 1 < argc) {
       max_n = std::strtol(argv[++k], nullptr, 10);
     } else if (std::strcmp(argv[k], "--scene") == 0 && k + 1 < argc) {
@@ -557,7 +610,8 @@ int main(int argc, char** argv) {
         return 2;
       }
     } else {
-      std::fprintf(stderr, "usage: %s [--quick] [--search-only] [--max N] [--scene network|bundle]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--quick] [--search-only] [--max N] [--scene network|bundle] "
+                   "[--trace-memory]\n", argv[0]);
       return 2;
     }
   }
@@ -654,7 +708,7 @@ int main(int argc, char** argv) {
                       last_mem_per_seg[sc_id], n, last_mem_per_seg[sc_id] * n / 1e9);
         row.model_skip = row.skip_buf;
       } else {
-        row.model = run_model(sc, params, model_reps, peak_ok);
+        row.model = run_model(sc, params, model_reps, peak_ok, row.scene);
         if (row.model.candidates != row.pairs)
           fail("model candidates differ from the BVH on the same boxes");
         if (row.model.mem_all_bytes > 0) last_mem_per_seg[sc_id] = row.model.mem_all_bytes / n;

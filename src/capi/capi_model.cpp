@@ -406,10 +406,11 @@ int b2b_model_get_contact(const b2b_model* model, int k, int* nodes, int* pair, 
       pair[2] = b.beam;
       pair[3] = b.index;
     }
-    if (info) std::memcpy(info, c.info, sizeof c.info);
-    if (residual) std::memcpy(residual, c.residual, sizeof c.residual);
+    if (info) std::memcpy(info, c.info(), sizeof(double) * B2B_PAIR_INFO_LEN);
+    if (residual) std::memcpy(residual, c.residual(), sizeof(double) * B2B_PAIR_NDOF);
     if (tangent) {
-      const double* K = m.tangent(c);
+      double scratch[24 * 24];  // a packed tangent, unpacked
+      const double* K = m.tangent(c, scratch);
       for (int col = 0; col < 24; ++col)
         std::memcpy(tangent + static_cast<size_t>(ldk) * col, K + 24 * col, 24 * sizeof(double));
     }

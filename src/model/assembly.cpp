@@ -44,7 +44,7 @@ void add_residual(const Model& m, const EqMap& map, double scale, double* f) {
   for (const Contact& c : m.contacts()) {
     dof_equations(c, map, e);
     for (int k = 0; k < 24; ++k)
-      if (e[k] >= 0) f[e[k]] += scale * c.residual[k];
+      if (e[k] >= 0) f[e[k]] += scale * c.residual()[k];
   }
 }
 

@@ -113,9 +113,7 @@ int Auditor::reason(int a, int b, const SegmentClosest& c) {
     if (table_.arc_gap(beam, a, b) <= exclusion) return B2B_AUDIT_EXCLUDED_SELF;
   }
   // 2. not among the last update's candidates
-  const std::vector<std::pair<int, int>>& cand = m_.candidates();
-  if (!std::binary_search(cand.begin(), cand.end(), std::make_pair(a, b)))
-    return B2B_AUDIT_NEVER_EVALUATED;
+  if (m_.candidates().find(a, b) < 0) return B2B_AUDIT_NEVER_EVALUATED;
   // 3. the centrelines passed through each other since the commit: the
   //    separation now points against the committed one
   if (!m_.committed_coords().empty()) {

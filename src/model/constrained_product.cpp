@@ -40,9 +40,10 @@ Problem check_increments(const Model& m, const EqMap& map, const double* du, int
 void add_constrained_product(const Model& m, const EqMap& map, const double* du, int ldu,
                              double scale, double* f) {
   int e[24];
+  double scratch[24 * 24];  // a packed tangent, unpacked
   for (const Contact& c : m.contacts()) {
     dof_equations(c, map, e);
-    const double* K = m.tangent(c);
+    const double* K = m.tangent(c, scratch);
     for (int col = 0; col < 24; ++col) {
       if (!constrained(c, map, col)) continue;
       const double d = increment(c, du, ldu, col);

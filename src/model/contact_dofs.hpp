@@ -45,9 +45,10 @@ inline void dof_equations(const Contact& c, const EqMap& map, int e[24]) {
 template <class Visit>
 void for_each_entry(const Model& m, const EqMap& map, Visit visit, bool tangent = true) {
   int e[24];
+  double scratch[24 * 24];  // a packed tangent, unpacked
   for (const Contact& c : m.contacts()) {
     dof_equations(c, map, e);
-    const double* K = tangent ? m.tangent(c) : nullptr;
+    const double* K = tangent ? m.tangent(c, scratch) : nullptr;
     for (int col = 0; col < 24; ++col) {
       if (e[col] < 0) continue;
       for (int row = 0; row < 24; ++row)

@@ -232,8 +232,7 @@ void Model::revert() {
   migration_.clear();  // [partition] received and migrating contacts go with the update
   updated_ = false;
   has_results_ = false;
-  contacts_.clear();
-  tangents_.clear();
+  contacts_.clear();  // their outputs' pages stay, for the next update to reuse
   std::fill(counts_, counts_ + 16, 0);
   std::fill(totals_, totals_ + 8, 0.0);
 }

@@ -15,8 +15,10 @@
 #include "../pair/contact_element.hpp"
 #include "../pair/params.hpp"
 #include "beam_table.hpp"
+#include "contact_result.hpp"
 #include "contact_state.hpp"
 #include "migration.hpp"
+#include "page_pool.hpp"
 #include "partition.hpp"
 #include "search.hpp"
 #include "update_workspace.hpp"
@@ -67,15 +69,6 @@ struct Problem {
   const char* detail = "";
 };
 
-// One active contact of the last update.
-struct Contact {
-  int a, b;  // segments (oriented)
-  int nodes[8];
-  double info[pair::kInfoLength];
-  double residual[pair::kNdof];
-  const double* tangent = nullptr;  // in one of Model::tangents_ (null: none)
-};
-
 class Model {
  public:
   // --- set-up (before finalize) ---
@@ -112,7 +105,11 @@ class Model {
   // is update(x + u) bit for bit.
   Problem update(const double* x, int ldx, const double* u, int ldu, bool want_tangent);
   const std::vector<Contact>& contacts() const { return contacts_; }
-  const double* tangent(const Contact& c) const { return c.tangent; }
+  // A contact's tangent (kNdof x kNdof, column-major), in place or unpacked
+  // into scratch (kNdof * kNdof doubles: contact_result.hpp); null without.
+  const double* tangent(const Contact& c, double* scratch) const {
+    return result_tangent(c.result, c.form, scratch);
+  }
   const int* counts() const { return counts_; }
   const double* totals() const { return totals_; }
   bool has_tangents() const { return want_tangent_; }
@@ -151,10 +148,11 @@ class Model {
   // cost their beams, not their square)
   std::vector<std::pair<uint64_t, int>> gp_of_groups_;
   double margin_ = 0.0, g0_max_ = 0.0;
-  // broad phase
+  // broad phase: the grown boxes and their index live only while a search
+  // runs (update.cpp, broad_phase)
   std::vector<Box> search_boxes_;
   BoxTree tree_;
-  std::vector<std::pair<int, int>> candidates_;
+  PairRows candidates_;  // the pairs (a, b), a < b, in order
   std::vector<double> build_coords_;  // coordinates at the last build
   int builds_ = 0;
   // states
@@ -167,10 +165,10 @@ class Model {
   // revert before that forgets them, so the next update measures again.
   bool arcs_committed_ = false;
   std::vector<Contact> contacts_;
-  // The contacts' tangents, in the blocks the update's parallel chunks
-  // filled at their exact size: gathering them into one array would hold
-  // them twice at the update's peak.
-  std::vector<std::vector<double>> tangents_;
+  // The contacts' outputs (info, residual, tangent: contact_result.hpp), in
+  // the pages the update's threads wrote them to; the workspace holds the
+  // other set, which the next update writes (update_workspace.hpp).
+  PagePool<double> results_;
   UpdateWorkspace workspace_;  // the update's buffers, reused (update_workspace.hpp)
   int counts_[16] = {0};
   double totals_[8] = {0};
@@ -213,7 +211,7 @@ class Model {
   const std::vector<double>& current_coords() const { return current_coords_; }
   const std::vector<double>& committed_coords() const { return committed_coords_; }
   const NodeIndex& used_index() const { return used_index_; }
-  const std::vector<std::pair<int, int>>& candidates() const { return candidates_; }
+  const PairRows& candidates() const { return candidates_; }
 };
 
 }  // namespace model

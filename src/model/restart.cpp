@@ -247,7 +247,7 @@ struct RestartCodec {
     m.updated_ = false;
     m.has_results_ = false;
     m.contacts_.clear();
-    m.tangents_.clear();
+    m.results_.clear();
     return Problem();
   }
 };

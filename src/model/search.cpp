@@ -115,10 +115,24 @@ int BoxTree::split_range(std::vector<Centre>& centres, int lo, int hi) {
   return id;
 }
 
-// Chunk c holds the partners of boxes c * chunk_size onwards, each box's in
-// order: its pairs go to out after those of the chunks before it.
-void BoxTree::gather(int n_chunks, int chunk_size, int threads,
-                     std::vector<std::pair<int, int>>& out) const {
+void BoxTree::release() {
+  for (Chunk& c : chunks_) {
+    c.released = c.partners.size();
+    std::vector<int>().swap(c.partners);
+    std::vector<int>().swap(c.count);
+  }
+  boxes_ = nullptr;
+  std::vector<int>().swap(order_);
+  std::vector<Box>().swap(sorted_);
+  std::vector<Node>().swap(nodes_);
+#ifdef B2B_HAVE_BOOST_GEOMETRY
+  rtree_.clear();
+#endif
+}
+
+// Chunk c holds the partners of boxes c * kQueryChunk onwards, each box's
+// in order: its pairs go to out after those of the chunks before it.
+void BoxTree::gather(int n_chunks, int threads, std::vector<std::pair<int, int>>& out) const {
   std::vector<size_t> offset(static_cast<size_t>(n_chunks) + 1, 0);
   for (int c = 0; c < n_chunks; ++c) offset[c + 1] = offset[c] + chunks_[c].partners.size();
   out.resize(offset[n_chunks]);
@@ -132,10 +146,50 @@ void BoxTree::gather(int n_chunks, int chunk_size, int threads,
     const Chunk& chunk = chunks_[c];
     size_t at = offset[c], k = 0;
     for (size_t r = 0; r < chunk.count.size(); ++r) {
-      const int i = c * chunk_size + static_cast<int>(r);
+      const int i = c * kQueryChunk + static_cast<int>(r);
       for (int e = 0; e < chunk.count[r]; ++e) out[at++] = {i, chunk.partners[k++]};
     }
   }
+}
+
+void BoxTree::gather(int n_chunks, int threads, PairRows& out) const {
+  const size_t n = boxes_ ? boxes_->size() : 0;
+  std::vector<size_t> offset(static_cast<size_t>(n_chunks) + 1, 0);
+  for (int c = 0; c < n_chunks; ++c) offset[c + 1] = offset[c] + chunks_[c].partners.size();
+  out.start.resize(n + 1);
+  out.partner.resize(offset[n_chunks]);
+#ifdef B2B_HAVE_OPENMP
+  const int nt = threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel for schedule(static) num_threads(nt) if (n_chunks > 1)
+#else
+  (void)threads;
+#endif
+  for (int c = 0; c < n_chunks; ++c) {
+    const Chunk& chunk = chunks_[c];
+    int64_t at = static_cast<int64_t>(offset[c]);
+    for (size_t r = 0; r < chunk.count.size(); ++r) {
+      out.start[static_cast<size_t>(c) * kQueryChunk + r] = at;
+      at += chunk.count[r];
+    }
+    std::copy(chunk.partners.begin(), chunk.partners.end(),
+              out.partner.begin() + static_cast<std::ptrdiff_t>(offset[c]));
+  }
+  out.start[n] = static_cast<int64_t>(offset[n_chunks]);
+}
+
+int PairRows::row_of(size_t k) const {
+  // The last row that starts at or before k (rows without pairs start where
+  // the next one does).
+  const auto it = std::upper_bound(start.begin(), start.end(), static_cast<int64_t>(k));
+  return static_cast<int>(it - start.begin()) - 1;
+}
+
+int64_t PairRows::find(int a, int b) const {
+  if (a < 0 || static_cast<size_t>(a) + 1 >= start.size()) return -1;
+  const auto lo = partner.begin() + static_cast<std::ptrdiff_t>(start[a]);
+  const auto hi = partner.begin() + static_cast<std::ptrdiff_t>(start[a + 1]);
+  const auto it = std::lower_bound(lo, hi, b);
+  return it != hi && *it == b ? static_cast<int64_t>(it - partner.begin()) : -1;
 }
 
 }  // namespace model

@@ -13,11 +13,15 @@
 // i, in fixed chunks of consecutive boxes: a host's segments follow their
 // beams, so consecutive queries walk the same part of the tree, and each
 // chunk's pairs come out sorted and are copied once into place. The chunks'
-// buffers are kept for the next search (the model searches again whenever a
-// node has moved half its margin), so a rebuild writes into memory it
-// already holds.
+// buffers are kept for the next search, which then writes into memory it
+// already holds, unless the caller releases them with the index (release:
+// the model does, as its candidates hold the same pairs again and it builds
+// a new index for every search); a search after a release reserves each
+// chunk's buffer at the size it last had, so that it does not grow it by
+// doubling.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -43,6 +47,24 @@ inline bool boxes_overlap(const Box& a, const Box& b) {
          a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
 }
 
+// Pairs (a, b), a < b, sorted, kept as each a's list of b in order
+// (compressed rows): 4 bytes a pair and 8 a box instead of 8 a pair, which
+// matters where there are a hundred pairs a box (the bundle of
+// examples/c/model_scaling.cpp finds 150-175 a segment).
+struct PairRows {
+  std::vector<int64_t> start;  // a's pairs are [start[a], start[a + 1]); empty when cleared
+  std::vector<int> partner;    // b of each pair
+  size_t size() const { return partner.size(); }
+  void clear() {
+    start.clear();
+    partner.clear();
+  }
+  // a of pair k (k < size()).
+  int row_of(size_t k) const;
+  // The index of pair (a, b), a < b, or -1.
+  int64_t find(int a, int b) const;
+};
+
 class BoxTree {
  public:
   enum class Backend { kBvh, kRTree };
@@ -62,6 +84,13 @@ class BoxTree {
   // is true, sorted. threads: as b2b's "threads" option (0: OpenMP's default).
   template <class Accept>
   void overlapping_pairs(Accept accept, int threads, std::vector<std::pair<int, int>>& out);
+  // The same pairs as rows (out.start has a row for every box).
+  template <class Accept>
+  void overlapping_pairs(Accept accept, int threads, PairRows& out);
+  // Frees the index and the chunks' buffers (half the memory of the pairs
+  // found: a box index per pair), keeping the buffers' sizes for the next
+  // search; build() must come before the next overlapping_pairs().
+  void release();
 
  private:
   // 64 bytes, one cache line. Nodes are stored depth first, so a node's
@@ -72,9 +101,11 @@ class BoxTree {
     int right = -1;  // the right child (-1: a leaf)
     int max_index;   // the largest box index among them
   };
-  // One chunk of consecutive boxes: each one's partners j > i, in order.
+  // One chunk of consecutive boxes: each one's partners j > i, in order;
+  // how many it had when its buffer was released (0: none).
   struct Chunk {
     std::vector<int> count, partners;
+    size_t released = 0;
   };
   const std::vector<Box>* boxes_ = nullptr;
   bool use_rtree_ = false;
@@ -101,8 +132,13 @@ class BoxTree {
   void partners(int i, Accept& accept, std::vector<int>& out) const;
   template <class Accept>
   void rtree_partners(int i, Accept& accept, std::vector<int>& out) const;
+  static constexpr int kQueryChunk = 4096;  // boxes per chunk of the query
+  // Every box's accepted partners into chunks_; the number of chunks.
+  template <class Accept>
+  int query_chunks(Accept& accept, int threads);
   // The chunks' pairs, copied in order into out.
-  void gather(int n_chunks, int chunk_size, int threads, std::vector<std::pair<int, int>>& out) const;
+  void gather(int n_chunks, int threads, std::vector<std::pair<int, int>>& out) const;
+  void gather(int n_chunks, int threads, PairRows& out) const;
 };
 
 template <class Accept>

@@ -15,12 +15,9 @@ namespace b2b {
 namespace model {
 
 template <class Accept>
-void BoxTree::overlapping_pairs(Accept accept, int threads,
-                                std::vector<std::pair<int, int>>& out) {
-  out.clear();
+int BoxTree::query_chunks(Accept& accept, int threads) {
   const int n = boxes_ ? static_cast<int>(boxes_->size()) : 0;
-  constexpr int kChunk = 4096;
-  const int n_chunks = (n + kChunk - 1) / kChunk;
+  const int n_chunks = (n + kQueryChunk - 1) / kQueryChunk;
   if (static_cast<int>(chunks_.size()) < n_chunks) chunks_.resize(n_chunks);
   // No exception may leave a parallel region (std::terminate): a chunk that
   // throws (std::bad_alloc, or accept's own) keeps its exception, the others
@@ -30,6 +27,8 @@ void BoxTree::overlapping_pairs(Accept accept, int threads,
 #ifdef B2B_HAVE_OPENMP
   const int nt = threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nt) if (n_chunks > 1)
+#else
+  (void)threads;
 #endif
   for (int c = 0; c < n_chunks; ++c) {
     if (stop.load(std::memory_order_relaxed)) continue;
@@ -38,8 +37,9 @@ void BoxTree::overlapping_pairs(Accept accept, int threads,
       Chunk& chunk = chunks_[c];
       chunk.count.clear();
       chunk.partners.clear();
-      const int end = std::min(n, (c + 1) * kChunk);
-      for (int i = c * kChunk; i < end && !stop.load(std::memory_order_relaxed); ++i) {
+      if (chunk.partners.capacity() < chunk.released) chunk.partners.reserve(chunk.released);
+      const int end = std::min(n, (c + 1) * kQueryChunk);
+      for (int i = c * kQueryChunk; i < end && !stop.load(std::memory_order_relaxed); ++i) {
         const size_t start = chunk.partners.size();
         partners(i, local, chunk.partners);
         std::sort(chunk.partners.begin() + static_cast<std::ptrdiff_t>(start),
@@ -53,7 +53,20 @@ void BoxTree::overlapping_pairs(Accept accept, int threads,
   }
   for (const std::exception_ptr& e : thrown)
     if (e) std::rethrow_exception(e);
-  gather(n_chunks, kChunk, threads, out);
+  return n_chunks;
+}
+
+template <class Accept>
+void BoxTree::overlapping_pairs(Accept accept, int threads,
+                                std::vector<std::pair<int, int>>& out) {
+  out.clear();
+  gather(query_chunks(accept, threads), threads, out);
+}
+
+template <class Accept>
+void BoxTree::overlapping_pairs(Accept accept, int threads, PairRows& out) {
+  out.clear();
+  gather(query_chunks(accept, threads), threads, out);
 }
 
 }  // namespace model

@@ -38,8 +38,7 @@ class CacheSimulation {
 
 }  // namespace
 
-int SegmentCache::choose_sets(const std::vector<std::pair<int, int>>& candidates,
-                              int n_segments, int threads) {
+int SegmentCache::choose_sets(const PairRows& candidates, int n_segments, int threads) {
   constexpr int kMinSets = 32;
   // The memory bound: all threads' caches together at most about 64 bytes
   // per candidate pair (an entry is about 2 kB), and no more entries than
@@ -66,9 +65,13 @@ int SegmentCache::choose_sets(const std::vector<std::pair<int, int>>& candidates
       const size_t begin = windows == 1 ? 0 : w * ((n - kWindow) / (kWindows - 1));
       const size_t end = std::min(n, begin + kWindow);
       CacheSimulation sim(sets);
+      const int64_t* start = candidates.start.data();
+      const int* partner = candidates.partner.data();
+      int a = begin < n ? candidates.row_of(begin) : 0;
       for (size_t k = begin; k < end; ++k) {
-        const int held = sim.request(candidates[k].first, -1, m);
-        sim.request(candidates[k].second, held, m);
+        while (static_cast<size_t>(start[a + 1]) <= k) ++a;
+        const int held = sim.request(a, -1, m);
+        sim.request(partner[k], held, m);
       }
     }
     sizes.push_back(sets);

@@ -20,6 +20,7 @@
 
 #include "../curve/segment.hpp"
 #include "beam_table.hpp"
+#include "search.hpp"
 
 namespace b2b {
 namespace model {
@@ -55,8 +56,7 @@ class SegmentCache {
   // segments, are within 25% of those of the largest allowed, which is
   // bounded by memory: all caches together at most about 64 bytes per
   // candidate pair (a few times the candidate list), and at least 32 sets.
-  static int choose_sets(const std::vector<std::pair<int, int>>& candidates, int n_segments,
-                         int threads);
+  static int choose_sets(const PairRows& candidates, int n_segments, int threads);
   static constexpr int kWays = 2;
 
  private:

@@ -6,7 +6,10 @@
 //      candidate list, on segments built by each thread's small cache
 //      (segment_cache.hpp) as the pairs ask for them; what a pair leaves is
 //      streamed into its chunk: its status is counted, and only a pair that
-//      a later stage reads (one with a record, pair_record.hpp) is kept
+//      a later stage reads (one with a record, pair_record.hpp) is kept; an
+//      active contact's outputs go straight to the model's next set of
+//      results (contact_result.hpp), all of it in pages that the next
+//      update reuses (page_pool.hpp)
 //   4. the crossing check (crossing.hpp) on the kept pairs
 //   5. handover: a committed contact whose point left its pair follows it,
 //      hop by hop, with its committed history mapped across each joint
@@ -18,6 +21,8 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <memory>
+#include <new>
 
 #include <b2b/b2b.h>
 
@@ -78,12 +83,12 @@ class Updater {
  public:
   Updater(Model& m, const double* x, int ldx, const double* u, int ldu, bool want_tangent)
       : m_(m), ws_(m.workspace_), x_(x), u_(u), ldx_(ldx), ldu_(ldu),
-        want_tangent_(want_tangent), margin_(m.effective_margin()) {}
+        want_tangent_(want_tangent), margin_(m.effective_margin()), items_(ws_.items),
+        serial_scratch_(ws_.scratch), serial_results_(ws_.results) {}
   Problem run();
 
  private:
   using Item = UpdateItem;
-  using ChunkOut = UpdateChunk;
   Model& m_;
   UpdateWorkspace& ws_;
   const double* x_;
@@ -99,22 +104,19 @@ class Updater {
   // Histories made for pairs that crossed (committed normals; for line
   // pairs committed_line_histories): their hist_old.
   std::vector<std::vector<double>> synthetic_;
-  std::vector<std::pair<int, int>> new_candidates_;
+  PairRows new_candidates_;
   bool rebuilt_ = false;
   // Committed active contacts that are not candidates (evaluated whatever
   // the boxes say), in key order.
   std::vector<const StoredPair*> extras_;
-  std::vector<Item> items_;  // the kept pairs, sorted by key
+  std::vector<Item*>& items_;  // the kept pairs, sorted by key (ws_.items)
   // Pairs evaluated and not kept, by B2B_COUNT_* of their status; all
   // evaluated pairs; candidates within contact reach.
   int unkept_[B2B_MODEL_COUNTS_LEN] = {0};
   int evaluated_ = 0, near_ = 0;
-  // The items' records and tangents in blocks at stable addresses: one per
-  // chunk of the parallel evaluation (the records' in ws_.records), then
-  // one per pair evaluated again after it (crossing, handover: records_).
-  // No tangent block is copied into another: they go to the model as they
-  // are, at their exact size.
-  std::vector<std::vector<double>> records_, tangent_blocks_;
+  // The items, records and results of the pairs evaluated after the
+  // parallel stage (crossing, handover), in the same pages as the threads'.
+  PageCursor<double> serial_scratch_, serial_results_;
   std::vector<double> fresh_;             // zeros: a fresh history
   int hops_ = 0, lost_ = 0;
   // [partition] the committed state the evaluation and the handovers read
@@ -124,9 +126,7 @@ class Updater {
   CommittedView view_;
   std::vector<Migrant> migrants_;
   const std::vector<Box>& search_boxes() const { return has_committed_ ? ws_.swept : ws_.boxes; }
-  const std::vector<std::pair<int, int>>& candidates() const {
-    return rebuilt_ ? new_candidates_ : m_.candidates_;
-  }
+  const PairRows& candidates() const { return rebuilt_ ? new_candidates_ : m_.candidates_; }
 
   int nt() const {
 #ifdef B2B_HAVE_OPENMP
@@ -140,10 +140,10 @@ class Updater {
   void sweep_boxes();
   void broad_phase();
   bool near(int a, int b, int gp) const;
-  // Work item k of the evaluation (a candidate, then an extra) as an item
-  // to evaluate: false if it is not evaluated (apart and no committed
-  // contact); *is_near: a candidate within contact reach.
-  bool work_item(size_t k, Item& it, bool* is_near) const;
+  // Work item k of the evaluation (a candidate, (a, b), then an extra) as
+  // an item to evaluate: false if it is not evaluated (apart and no
+  // committed contact); *is_near: a candidate within contact reach.
+  bool work_item(size_t k, int a, int b, Item& it, bool* is_near) const;
   // The element on one pair: res, and a line pair's new histories in
   // line_hist (buffers of the caller, reused from pair to pair). Its
   // segments come from cache; false (fail, *bad: the segment) when one
@@ -156,8 +156,8 @@ class Updater {
                      pair::PairResult& res, std::vector<double>& line_hist, double* K) const;
   pair::SegmentRef ref(int s, const SegmentCache::Entry& e) const;
   SegmentEnds ends_of(int s) const;
-  int64_t settle(Item& item, const pair::PairResult& res, const std::vector<double>& line_hist,
-                 std::vector<double>& recs) const;
+  bool settle(Item& item, const pair::PairResult& res, const std::vector<double>& line_hist,
+              const double* K, PageCursor<double>& recs, PageCursor<double>& results) const;
   void settle_alone(Item& item, const pair::PairResult& res, const std::vector<double>& line_hist,
                     const double* K);
   // A pair evaluated after the parallel stage, on the serial cache; a
@@ -166,9 +166,13 @@ class Updater {
                           std::vector<double>& line_hist, double* K);
   Problem segment_problem(int s, const curve::Failure& f) const;
   Problem evaluate_all();
-  void evaluate_chunk(int c, size_t n_work, SegmentCache& cache, ChunkOut& out,
-                      std::vector<double>& recs, std::vector<double>& Ks,
-                      std::vector<double>& line_hist, pair::PairResult& res, double* K);
+  // The pages one thread of the evaluation writes to.
+  struct Cursors {
+    PageCursor<double> scratch, results;
+  };
+  void evaluate_chunk(int c, size_t n_work, SegmentCache& cache, UpdateTally& tally,
+                      Cursors& pages, std::vector<double>& line_hist, pair::PairResult& res,
+                      double* K);
   Problem crossed_pairs();
   Problem crossed_line_pair(Item& it);
   Problem evaluate_with(Item& it, std::vector<double> hist);
@@ -379,6 +383,11 @@ void Updater::broad_phase() {
         return true;
       },
       m_.threads, new_candidates_);
+  // The candidates hold the pairs now: the search's index, its own copy of
+  // the pairs and the grown boxes go before the evaluation allocates (issue
+  // 20: 1 kB per segment of the bundle, held from update to update before).
+  m_.tree_.release();
+  std::vector<Box>().swap(grown);
 }
 
 // Whether the candidate (a, b) of group pair gp is within contact reach.
@@ -391,23 +400,22 @@ bool Updater::near(int a, int b, int gp) const {
   return box_distance(search_boxes()[a], search_boxes()[b]) <= reach;
 }
 
-bool Updater::work_item(size_t k, Item& it, bool* is_near) const {
-  const std::vector<std::pair<int, int>>& cand = candidates();
+bool Updater::work_item(size_t k, int a, int b, Item& it, bool* is_near) const {
+  const size_t n_cand = candidates().size();
   *is_near = false;
   const StoredPair* sp;
-  if (k < cand.size()) {
-    const std::pair<int, int>& c = cand[k];
-    const int gp = m_.group_pair_index(c.first, c.second);
-    *is_near = near(c.first, c.second, gp);
-    sp = view_.state->find(pair_key(c.first, c.second));
+  if (k < n_cand) {
+    const int gp = m_.group_pair_index(a, b);
+    *is_near = near(a, b, gp);
+    sp = view_.state->find(pair_key(a, b));
     // The contacts of the last commit are evaluated whatever the boxes say:
     // their pair tells where the point went.
     if (!*is_near && !(sp && sp->status == B2B_CONTACT_ACTIVE)) return false;
-    it.a = c.first;
-    it.b = c.second;
+    it.a = a;
+    it.b = b;
     it.gp = gp;
   } else {
-    sp = extras_[k - cand.size()];
+    sp = extras_[k - n_cand];
     it.gp = sp->group_pair;
   }
   // A pair with a committed history keeps its orientation and reads it.
@@ -502,40 +510,59 @@ void Updater::evaluate_line(const Item& item, const pair::SegmentRef& A,
 }
 
 // Takes an evaluation into its item: the status, the overflow, the length
-// of the new history, and the record (if the status has one) appended to
-// recs. Returns the record's offset in recs, or -1. The item's record and
-// tangent are left null for the caller to point into their blocks.
-int64_t Updater::settle(Item& item, const pair::PairResult& res,
-                        const std::vector<double>& line_hist, std::vector<double>& recs) const {
+// of the new history, the record (if the status has one) cut from recs,
+// and an active contact's outputs, with its tangent K (null: none), cut
+// from results. Returns whether a later stage reads the item (it has a
+// record, or it overflowed).
+bool Updater::settle(Item& item, const pair::PairResult& res,
+                     const std::vector<double>& line_hist, const double* K,
+                     PageCursor<double>& recs, PageCursor<double>& results) const {
   const GroupPair& gp = m_.group_pairs_[item.gp];
   item.status = static_cast<int8_t>(res.contact_status);
   item.overflow = res.overflow;
   item.hist_len = gp.line ? static_cast<int>(line_hist.size()) : gp.hist_len;
   item.rec = nullptr;
-  item.tangent = nullptr;
+  item.result = nullptr;
+  item.form = TangentForm::None;
   const bool committed = item.hist_old != nullptr;
-  const size_t len = record_length(item.status, committed, item.hist_len);
-  if (len == 0) return -1;
-  const size_t at = recs.size();
-  recs.resize(at + len);
-  write_record(res, committed, gp.line ? line_hist.data() : res.history, item.hist_len,
-               recs.data() + at);
-  return static_cast<int64_t>(at);
+  // The crossing check's first test (crossed_pairs), on the axis distance
+  // of the closest points, as it would make it from the record.
+  item.crossing = false;
+  if (has_committed_ && !committed &&
+      (item.status == B2B_CONTACT_ACTIVE || item.status == B2B_CONTACT_OPEN)) {
+    double rho;
+    if (gp.line) {
+      rho = res.info[B2B_INFO_GAP] + m_.table_.segment(item.a).radius +
+            m_.table_.segment(item.b).radius;
+    } else {
+      double d[3];
+      for (int i = 0; i < 3; ++i) d[i] = res.info[B2B_INFO_POINT_A + i] - res.info[B2B_INFO_POINT_B + i];
+      rho = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    item.crossing = may_have_crossed(ws_.motion, item.a, item.b, rho);
+  }
+  const bool with_diff = item.crossing && !gp.line;
+  const size_t len = record_length(item.status, committed, item.hist_len, with_diff);
+  if (len > 0) {
+    double* rec = recs.take(len);
+    write_record(res, committed, gp.line ? line_hist.data() : res.history, item.hist_len,
+                 with_diff, rec);
+    item.rec = rec;
+  }
+  if (item.status == B2B_CONTACT_ACTIVE) {
+    item.form = tangent_form(K);
+    double* block = results.take(result_length(item.form));
+    write_result(res.info, res.residual, K, item.form, block);
+    item.result = block;
+  }
+  return len > 0 || item.overflow;
 }
 
 // settle() for a pair evaluated after the parallel stage (rare: crossing,
-// handover): its record and tangent K (null: none) in blocks of their own.
+// handover).
 void Updater::settle_alone(Item& item, const pair::PairResult& res,
                            const std::vector<double>& line_hist, const double* K) {
-  std::vector<double> rec;
-  if (settle(item, res, line_hist, rec) >= 0) {
-    records_.push_back(std::move(rec));
-    item.rec = records_.back().data();
-  }
-  if (K && item.status == B2B_CONTACT_ACTIVE) {
-    tangent_blocks_.emplace_back(K, K + pair::kNdof * pair::kNdof);
-    item.tangent = tangent_blocks_.back().data();
-  }
+  settle(item, res, line_hist, K, serial_scratch_, serial_results_);
 }
 
 Problem Updater::segment_problem(int s, const curve::Failure& f) const {
@@ -577,9 +604,10 @@ Problem Updater::overflow(const Item& item) const {
 // the contact whose term makes a sum overflow is reported as overflowing.
 Problem Updater::totals_overflow() const {
   double energy = 0.0, force = 0.0, dissipation = 0.0;
-  for (const Item& it : items_) {
+  for (const Item* p : items_) {
+    const Item& it = *p;
     if (it.status != B2B_CONTACT_ACTIVE) continue;
-    const double* info = record_info(it.rec, it.hist_len);
+    const double* info = result_info(it.result);
     energy += info[B2B_INFO_ENERGY];
     force += info[B2B_INFO_NORMAL_FORCE];
     dissipation += info[B2B_INFO_DISSIPATION];
@@ -591,100 +619,98 @@ Problem Updater::totals_overflow() const {
 }
 
 // One chunk of work items [c kChunk, (c + 1) kChunk): each evaluated on
-// the thread's cache, its status counted, and the pair kept if a later
-// stage reads it; its records and tangents copied at their exact size into
-// the chunk's blocks. recs, Ks, line_hist, res, K: the thread's buffers.
-void Updater::evaluate_chunk(int c, size_t n_work, SegmentCache& cache, ChunkOut& out,
-                             std::vector<double>& recs, std::vector<double>& Ks,
-                             std::vector<double>& line_hist, pair::PairResult& res, double* K) {
+// the thread's cache, its status counted in the thread's tally, and the
+// pair kept if a later stage reads it: its item, record and (active) outputs
+// written to the thread's pages, the chunk's items contiguous.
+// line_hist, res, K: the thread's buffers.
+void Updater::evaluate_chunk(int c, size_t n_work, SegmentCache& cache, UpdateTally& tally,
+                             Cursors& pages, std::vector<double>& line_hist,
+                             pair::PairResult& res, double* K) {
   const size_t begin = static_cast<size_t>(c) * kChunk;
   const size_t end = std::min(n_work, begin + kChunk);
-  out.kept.clear();
-  recs.clear();
-  Ks.clear();
-  int64_t rec_at[kChunk], K_at[kChunk];
+  const PairRows& cand = candidates();
+  const size_t n_cand = cand.size();
+  // The chunk's kept items, copied to its thread's page at the end (its
+  // records are cut from the same page meanwhile).
+  Item kept[kChunk];
+  int n_kept = 0, kept_candidates = 0;
+  // The rows walked with pointers of their own: writes through kept and
+  // tally could otherwise alias the vectors' and force their reload.
+  const int64_t* start = cand.start.data();
+  const int* partner = cand.partner.data();
+  int a = begin < n_cand ? cand.row_of(begin) : -1;  // the row of candidate k
   for (size_t k = begin; k < end; ++k) {
+    int b = -1;
+    if (k < n_cand) {
+      while (static_cast<size_t>(start[a + 1]) <= k) ++a;
+      b = partner[k];
+    }
     Item it;
     bool is_near;
-    if (!work_item(k, it, &is_near)) continue;
-    out.near += is_near;
-    ++out.evaluated;
+    if (!work_item(k, a, b, it, &is_near)) continue;
+    tally.near += is_near;
+    ++tally.evaluated;
     curve::Failure fail;
     int bad = -1;
     if (!evaluate(it, cache, res, line_hist, want_tangent_ ? K : nullptr, fail, &bad)) {
-      if (out.bad_segment < 0 || bad < out.bad_segment) {
-        out.bad_segment = bad;
-        out.fail = fail;
+      if (tally.bad_segment < 0 || bad < tally.bad_segment) {
+        tally.bad_segment = bad;
+        tally.fail = fail;
       }
       continue;
     }
-    const int64_t at = settle(it, res, line_hist, recs);
-    if (at < 0 && !it.overflow) {
-      ++out.counts[count_slot(it.status)];
+    if (!settle(it, res, line_hist, want_tangent_ ? K : nullptr, pages.scratch, pages.results)) {
+      ++tally.counts[count_slot(it.status)];
       continue;
     }
-    const size_t j = out.kept.size();
-    rec_at[j] = at;
-    K_at[j] = -1;
-    if (want_tangent_ && it.status == B2B_CONTACT_ACTIVE) {
-      K_at[j] = static_cast<int64_t>(Ks.size());
-      Ks.insert(Ks.end(), K, K + pair::kNdof * pair::kNdof);
-    }
-    out.kept.push_back(it);
-    out.kept_candidates += k < candidates().size();
+    kept[n_kept++] = it;
+    kept_candidates += k < n_cand;
   }
-  if (!recs.empty()) ws_.records[c].assign(recs.begin(), recs.end());
-  if (!Ks.empty()) tangent_blocks_[c].assign(Ks.begin(), Ks.end());
-  for (size_t j = 0; j < out.kept.size(); ++j) {
-    if (rec_at[j] >= 0) out.kept[j].rec = ws_.records[c].data() + rec_at[j];
-    if (K_at[j] >= 0) out.kept[j].tangent = tangent_blocks_[c].data() + K_at[j];
-  }
+  Item* to = n_kept ? take_items(pages.scratch, static_cast<size_t>(n_kept)) : nullptr;
+  std::uninitialized_copy(kept, kept + n_kept, to);
+  ws_.chunks[c] = UpdateChunk{to, n_kept, kept_candidates};
 }
 
 Problem Updater::evaluate_all() {
   fresh_.assign(pair::kHistoryLengthMax, 0.0);
   // The committed contacts that the candidates do not hold (both lists are
   // in key order: the search returns its pairs sorted, a < b).
-  const std::vector<std::pair<int, int>>& cand = candidates();
+  const PairRows& cand = candidates();
   extras_.clear();
   for (const StoredPair& sp : view_.state->pairs) {
     if (sp.status != B2B_CONTACT_ACTIVE) continue;
-    const std::pair<int, int> c(std::min(sp.a, sp.b), std::max(sp.a, sp.b));
-    if (!std::binary_search(cand.begin(), cand.end(), c)) extras_.push_back(&sp);
+    if (cand.find(std::min(sp.a, sp.b), std::max(sp.a, sp.b)) < 0) extras_.push_back(&sp);
   }
   const size_t n_work = cand.size() + extras_.size();
   const int n_chunks = static_cast<int>((n_work + kChunk - 1) / kChunk);
-  const int threads = nt();
-  if (ws_.caches.size() < static_cast<size_t>(std::max(threads, 1)))
-    ws_.caches.resize(std::max(threads, 1));
+  const int threads = std::max(nt(), 1);
+  if (ws_.caches.size() < static_cast<size_t>(threads)) ws_.caches.resize(threads);
   // The cache's size goes with the candidates: chosen again when they are.
   if (rebuilt_ || ws_.cache_sets == 0)
     ws_.cache_sets = SegmentCache::choose_sets(cand, m_.table_.segment_count(), threads);
   for (SegmentCache& cache : ws_.caches) cache.reset(ws_.cache_sets);
-  // One block of records and one of tangents per chunk, each filled by the
-  // thread that evaluates the chunk: the layout does not depend on the
-  // threads.
-  // (The chunks' outputs and record blocks are the workspace's, reused:
-  // an update allocates little in proportion to its candidates.)
-  std::vector<std::vector<double>>& records = ws_.records;
-  if (records.size() < static_cast<size_t>(n_chunks)) records.resize(n_chunks);
-  for (int c = 0; c < n_chunks; ++c) records[c].clear();
-  tangent_blocks_.assign(want_tangent_ ? n_chunks : 0, std::vector<double>());
-  std::vector<ChunkOut>& outs = ws_.chunks;
-  if (outs.size() < static_cast<size_t>(n_chunks)) outs.resize(n_chunks);
-  for (int c = 0; c < n_chunks; ++c) outs[c].reset();
+  // The workspace's pages, written again from their start; the results'
+  // are not the model's (it holds the other set until this update ends).
+  ws_.scratch.rewind();
+  ws_.results.rewind();
+  reserve_afresh(ws_.chunks, static_cast<size_t>(n_chunks));
+  ws_.chunks.resize(n_chunks);
+  ws_.tallies.assign(threads, UpdateTally());
   std::atomic<bool> thrown{false};  // no exception may leave a parallel region
 #ifdef B2B_HAVE_OPENMP
 #pragma omp parallel num_threads(threads) if (n_work >= static_cast<size_t>(kParallelPairs))
 #endif
   {
 #ifdef B2B_HAVE_OPENMP
-    SegmentCache& cache = ws_.caches[omp_get_thread_num()];
+    const int t = omp_get_thread_num();
 #else
-    SegmentCache& cache = ws_.caches[0];
+    const int t = 0;
 #endif
-    // A thread's buffers, reused from chunk to chunk.
-    std::vector<double> recs, Ks, line_hist;
+    SegmentCache& cache = ws_.caches[t];
+    UpdateTally& tally = ws_.tallies[t];
+    // A thread's pages and buffers, reused from chunk to chunk.
+    Cursors pages{PageCursor<double>(ws_.scratch), PageCursor<double>(ws_.results)};
+    std::vector<double> line_hist;
     pair::PairResult res;
     double K[pair::kNdof * pair::kNdof];
 #ifdef B2B_HAVE_OPENMP
@@ -693,7 +719,7 @@ Problem Updater::evaluate_all() {
     for (int c = 0; c < n_chunks; ++c) {
       if (thrown.load(std::memory_order_relaxed)) continue;
       try {
-        evaluate_chunk(c, n_work, cache, outs[c], recs, Ks, line_hist, res, K);
+        evaluate_chunk(c, n_work, cache, tally, pages, line_hist, res, K);
       } catch (...) {
         thrown = true;
       }
@@ -702,34 +728,33 @@ Problem Updater::evaluate_all() {
   if (thrown) throw std::bad_alloc();
   // The lowest segment that could not be built, as if all were built first.
   int bad = -1;
-  const ChunkOut* bad_out = nullptr;
-  size_t n_kept = 0;
-  for (int c = 0; c < n_chunks; ++c) {
-    const ChunkOut& o = outs[c];
-    if (o.bad_segment >= 0 && (bad < 0 || o.bad_segment < bad)) {
-      bad = o.bad_segment;
-      bad_out = &o;
+  const UpdateTally* bad_tally = nullptr;
+  for (const UpdateTally& t : ws_.tallies) {
+    if (t.bad_segment >= 0 && (bad < 0 || t.bad_segment < bad)) {
+      bad = t.bad_segment;
+      bad_tally = &t;
     }
-    for (int i = 0; i < B2B_MODEL_COUNTS_LEN; ++i) unkept_[i] += o.counts[i];
-    evaluated_ += o.evaluated;
-    near_ += o.near;
-    n_kept += o.kept.size();
+    for (int i = 0; i < B2B_MODEL_COUNTS_LEN; ++i) unkept_[i] += t.counts[i];
+    evaluated_ += t.evaluated;
+    near_ += t.near;
   }
-  if (bad_out) return segment_problem(bad, bad_out->fail);
+  if (bad_tally) return segment_problem(bad, bad_tally->fail);
+  size_t n_kept = 0;
+  for (int c = 0; c < n_chunks; ++c) n_kept += static_cast<size_t>(ws_.chunks[c].n_kept);
   // The kept pairs in key order: the candidates' in their order, then the
   // extras' (rare) merged in.
-  items_.clear();
-  items_.reserve(n_kept + 2 * extras_.size());
+  reserve_afresh(items_, n_kept + 2 * extras_.size());
   size_t from_candidates = 0;
   for (int c = 0; c < n_chunks; ++c) {
-    items_.insert(items_.end(), outs[c].kept.begin(), outs[c].kept.end());
-    from_candidates += outs[c].kept_candidates;
+    const UpdateChunk& o = ws_.chunks[c];
+    for (int j = 0; j < o.n_kept; ++j) items_.push_back(o.kept + j);
+    from_candidates += static_cast<size_t>(o.kept_candidates);
   }
-  const auto by_key = [](const Item& x, const Item& y) { return x.key() < y.key(); };
+  const auto by_key = [](const Item* x, const Item* y) { return x->key() < y->key(); };
   std::inplace_merge(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(from_candidates),
                      items_.end(), by_key);
-  for (const Item& it : items_)
-    if (it.overflow) return overflow(it);
+  for (const Item* it : items_)
+    if (it->overflow) return overflow(*it);
   return Problem();
 }
 
@@ -742,17 +767,16 @@ Problem Updater::evaluate_all() {
 // kept: active and open pairs have records.)
 Problem Updater::crossed_pairs() {
   if (!has_committed_) return Problem();
-  for (Item& it : items_) {
-    const int st = it.status;
-    if (it.hist_old || (st != B2B_CONTACT_ACTIVE && st != B2B_CONTACT_OPEN)) continue;
+  for (Item* p : items_) {
+    Item& it = *p;
+    // Active or open, no committed history, and moved far enough (settle()
+    // made the first test on its closest points).
+    if (!it.crossing) continue;
     if (m_.group_pairs_[it.gp].line) {
       if (Problem pb = crossed_line_pair(it); pb.status) return pb;
       continue;
     }
-    const double* d = it.rec + kRecDiff;
-    if (!may_have_crossed(ws_.motion, it.a, it.b,
-                          std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
-      continue;
+    const double* d = record_diff(it.rec, it.hist_len);
     const GroupPair& gp = m_.group_pairs_[it.gp];
     // Only pairs that moved this far need one (rare within Newton's
     // iterations).
@@ -791,9 +815,6 @@ Problem Updater::evaluate_with(Item& it, std::vector<double> hist) {
 // (sign tracking). The same side: the same result as without it.
 Problem Updater::crossed_line_pair(Item& it) {
   const GroupPair& gp = m_.group_pairs_[it.gp];
-  const double rho = it.rec[kRecGap] + m_.table_.segment(it.a).radius +
-                     m_.table_.segment(it.b).radius;
-  if (!may_have_crossed(ws_.motion, it.a, it.b, rho)) return Problem();
   const int hl = gp.hist_len;
   const int n = it.hist_len / hl - 1;
   std::vector<double> h(it.hist_len);
@@ -811,19 +832,19 @@ Problem Updater::crossed_line_pair(Item& it) {
 // exactly that status (handovers are rare: a contact crossing a joint).
 Problem Updater::unkept_status(int a, int b, int* status) {
   *status = -1;
-  const std::vector<std::pair<int, int>>& cand = candidates();
-  const std::pair<int, int> c(std::min(a, b), std::max(a, b));
-  const auto at = std::lower_bound(cand.begin(), cand.end(), c);
+  const int lo = std::min(a, b), hi = std::max(a, b);
+  const int64_t at = candidates().find(lo, hi);
   Item it;
   bool is_near = false;
-  if (at != cand.end() && *at == c) {
-    if (!work_item(static_cast<size_t>(at - cand.begin()), it, &is_near)) return Problem();
+  if (at >= 0) {
+    if (!work_item(static_cast<size_t>(at), lo, hi, it, &is_near)) return Problem();
   } else {
-    const auto ex = std::find_if(extras_.begin(), extras_.end(), [&c](const StoredPair* sp) {
-      return pair_key(sp->a, sp->b) == pair_key(c.first, c.second);
+    const auto ex = std::find_if(extras_.begin(), extras_.end(), [lo, hi](const StoredPair* sp) {
+      return pair_key(sp->a, sp->b) == pair_key(lo, hi);
     });
     if (ex == extras_.end()) return Problem();
-    work_item(candidates().size() + static_cast<size_t>(ex - extras_.begin()), it, &is_near);
+    work_item(candidates().size() + static_cast<size_t>(ex - extras_.begin()), -1, -1, it,
+              &is_near);
   }
   pair::PairResult res;
   std::vector<double> line_hist;
@@ -837,11 +858,10 @@ Problem Updater::handovers() {
   std::vector<uint64_t> claimed;  // targets a handover has taken in this update
   auto find_item = [this](uint64_t key) -> Item* {
     auto it = std::lower_bound(items_.begin(), items_.end(), key,
-                               [](const Item& i, uint64_t k) { return i.key() < k; });
-    return (it != items_.end() && it->key() == key) ? &*it : nullptr;
+                               [](const Item* i, uint64_t k) { return i->key() < k; });
+    return (it != items_.end() && (*it)->key() == key) ? *it : nullptr;
   };
-  const size_t n_sorted = items_.size();  // items_[0, n_sorted) stay sorted; new ones follow
-  std::vector<Item> added;
+  std::vector<Item*> added;  // in the kept pages, merged into items_ at the end
   std::vector<double> line_hist;  // unused: line pairs are not handed over
   for (const StoredPair& sp : committed.pairs) {
     if (sp.status != B2B_CONTACT_ACTIVE) continue;
@@ -910,8 +930,7 @@ Problem Updater::handovers() {
         trial.hist_old = nullptr;  // the handed-over history lives only here
         settle_alone(trial, res, line_hist, want_tangent_ ? K : nullptr);
         claimed.push_back(key);
-        if (Item* existing = find_item(key);
-            existing && existing - items_.data() < static_cast<std::ptrdiff_t>(n_sorted)) {
+        if (Item* existing = find_item(key)) {
           *existing = trial;
         } else {
           // Evaluated and not kept (counted by its status there), or new.
@@ -921,7 +940,9 @@ Problem Updater::handovers() {
             --unkept_[count_slot(old)];
           else
             ++evaluated_;
-          added.push_back(trial);
+          Item* slot = take_items(serial_scratch_, 1);
+          new (slot) Item(trial);
+          added.push_back(slot);
         }
         found = true;
         break;
@@ -934,7 +955,7 @@ Problem Updater::handovers() {
     if (!found) ++lost_;
   }
   if (!added.empty()) {  // merged in key order (the rest is sorted already)
-    const auto by_key = [](const Item& x, const Item& y) { return x.key() < y.key(); };
+    const auto by_key = [](const Item* x, const Item* y) { return x->key() < y->key(); };
     std::sort(added.begin(), added.end(), by_key);
     const size_t n_sorted_items = items_.size();
     items_.insert(items_.end(), added.begin(), added.end());
@@ -946,26 +967,29 @@ Problem Updater::handovers() {
 
 void Updater::finish() {
   Model& m = m_;
-  ContactState trial;
-  std::vector<Contact> contacts;
+  // The trial state and the contacts are written into the workspace's set,
+  // which the model's is swapped with at the end: at their size, reusing
+  // the memory of the update before last (no vector grown by doubling).
+  ContactState& trial = ws_.trial;
+  std::vector<Contact>& contacts = ws_.contacts;
   // The pairs evaluated and not kept are counted already; the kept ones here.
   int counts[B2B_MODEL_COUNTS_LEN];
   std::memcpy(counts, unkept_, sizeof counts);
   double totals[8] = {0};
   double min_gap = HUGE_VAL;
-  // Sized first: the trial state and the contacts are allocated once, at
-  // their size (a vector grown by doubling holds up to twice that).
   size_t n_kept = 0, n_hist = 0, n_active = 0;
-  for (const Item& it : items_)
-    if (it.status == B2B_CONTACT_ACTIVE || it.status == B2B_CONTACT_OPEN) {
+  for (const Item* p : items_)
+    if (p->status == B2B_CONTACT_ACTIVE || p->status == B2B_CONTACT_OPEN) {
+      const Item& it = *p;
       ++n_kept;
       n_hist += static_cast<size_t>(it.hist_len);
       n_active += it.status == B2B_CONTACT_ACTIVE;
     }
-  trial.pairs.reserve(n_kept);
-  trial.hist.reserve(n_hist);
-  contacts.reserve(n_active);
-  for (const Item& it : items_) {
+  reserve_afresh(trial.pairs, n_kept);
+  reserve_afresh(trial.hist, n_hist);
+  reserve_afresh(contacts, n_active);
+  for (const Item* p : items_) {
+    const Item& it = *p;
     const int st = it.status;
     ++counts[count_slot(st)];
     // The axes passed through each other (signed gap below -(r_A + r_B)).
@@ -980,7 +1004,7 @@ void Updater::finish() {
     trial.pairs.push_back(StoredPair{it.key(), it.a, it.b, st, it.gp, trial.hist.size(), len});
     trial.hist.insert(trial.hist.end(), h, h + len);
     if (st != B2B_CONTACT_ACTIVE) continue;
-    const double* info = record_info(it.rec, len);
+    const double* info = result_info(it.result);
     if (gp.line) {
       ++counts[B2B_COUNT_LINE];
       totals[B2B_TOTAL_LINE_POINTS] += info[B2B_INFO_LINE_POINTS];
@@ -990,9 +1014,8 @@ void Updater::finish() {
     c.b = it.b;
     std::memcpy(c.nodes, m.table_.segment(it.a).nodes, sizeof(int) * 4);
     std::memcpy(c.nodes + 4, m.table_.segment(it.b).nodes, sizeof(int) * 4);
-    std::memcpy(c.info, info, sizeof c.info);
-    std::memcpy(c.residual, record_residual(it.rec, len), sizeof c.residual);
-    c.tangent = it.tangent;
+    c.result = it.result;
+    c.form = it.form;
     contacts.push_back(c);
     totals[B2B_TOTAL_ENERGY] += info[B2B_INFO_ENERGY];
     totals[B2B_TOTAL_DISSIPATION_STEP] += info[B2B_INFO_DISSIPATION];
@@ -1009,15 +1032,13 @@ void Updater::finish() {
 
   std::vector<double> build_coords;  // allocated before the model changes
   if (rebuilt_) build_coords = cur_;
-  // The tangent blocks the contacts point into (the empty ones left out).
-  std::vector<std::vector<double>> tangents;
-  tangents.reserve(static_cast<size_t>(
-      std::count_if(tangent_blocks_.begin(), tangent_blocks_.end(),
-                    [](const std::vector<double>& b) { return !b.empty(); })));
-  for (std::vector<double>& b : tangent_blocks_)
-    if (!b.empty()) tangents.push_back(std::move(b));
+  // Nothing below allocates: the model changes all at once. The pages this
+  // update did not use are freed: the workspace holds what the last update
+  // needed, not the most any update did.
+  ws_.scratch.release_unused();
+  ws_.results.release_unused();
   if (rebuilt_) {
-    m.candidates_.swap(new_candidates_);
+    std::swap(m.candidates_, new_candidates_);
     m.build_coords_.swap(build_coords);
     ++m.builds_;
   }
@@ -1029,9 +1050,11 @@ void Updater::finish() {
   counts[B2B_COUNT_LOST] = lost_;
   std::memcpy(m.counts_, counts, sizeof counts);
   std::memcpy(m.totals_, totals, sizeof totals);
-  m.trial_ = std::move(trial);
-  m.contacts_ = std::move(contacts);
-  m.tangents_ = std::move(tangents);
+  // The model's last trial state, contacts and results go to the workspace,
+  // for the next update to write over.
+  std::swap(m.trial_, trial);
+  m.contacts_.swap(contacts);
+  m.results_.swap(ws_.results);
   // The model keeps these coordinates; the buffer of the last update's
   // goes to the next update.
   m.current_coords_.swap(cur_);

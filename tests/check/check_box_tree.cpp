@@ -5,7 +5,10 @@
  * boxes in a plane and on a line (degenerate extents), huge and tiny
  * coordinates, boxes spanning all the others, an accept filter, a tree
  * rebuilt on fewer boxes than before, and 1 and 2 threads (the same pairs in
- * the same order). The model's own search tests (check_model_search) reach
+ * the same order). Every case also takes the pairs as rows (PairRows, the
+ * model's candidates) from a tree released and built again: the same pairs,
+ * row_of and find agreeing with them. The model's own search tests
+ * (check_model_search) reach
  * the tree through the public API; this suite reaches the cases a scene of
  * fibres does not. */
 #include <cmath>
@@ -84,7 +87,31 @@ std::vector<BoxTree::Backend> backends() {
 
 const char* name(BoxTree::Backend b) { return b == BoxTree::Backend::kBvh ? "BVH" : "R-tree"; }
 
-// Every backend, with 1 and 2 threads, on a fresh tree: exactly brute force.
+// rows holds exactly ref (n boxes), and its lookups agree.
+void check_rows(const b2b::model::PairRows& rows, const Pairs& ref, size_t n, const char* what,
+                const char* backend, int threads) {
+  ck_assert_msg(rows.start.size() == n + 1 && rows.size() == ref.size(),
+                "%s, %s, %d thread(s), rows: %zu starts for %zu boxes, %zu pairs, brute force %zu",
+                what, backend, threads, rows.start.size(), n, rows.size(), ref.size());
+  for (size_t k = 0; k < ref.size(); ++k) {
+    const int a = ref[k].first, b = ref[k].second;
+    ck_assert_msg(rows.row_of(k) == a && rows.partner[k] == b &&
+                      rows.find(a, b) == static_cast<int64_t>(k),
+                  "%s, %s, %d thread(s), rows: pair %zu is (%d, %d) found at %lld, brute force "
+                  "(%d, %d)",
+                  what, backend, threads, k, rows.row_of(k), rows.partner[k],
+                  static_cast<long long>(rows.find(a, b)), a, b);
+    // No box pairs with itself, and the pair reversed is not stored.
+    ck_assert_msg(rows.find(a, a) < 0 && rows.find(b, a) < 0, "%s, %s: (%d, %d) found reversed",
+                  what, backend, a, b);
+  }
+  const int m = static_cast<int>(n);
+  ck_assert_msg(rows.find(-1, 0) < 0 && rows.find(m, m + 1) < 0 && rows.find(m - 1, m) < 0,
+                "%s, %s: a pair outside the boxes found", what, backend);
+}
+
+// Every backend, with 1 and 2 threads, on a fresh tree: exactly brute force,
+// as pairs and as rows.
 template <class Accept = AcceptAll>
 void check_set(const std::vector<Box>& boxes, const char* what, Accept accept = Accept()) {
   const Pairs ref = brute_force(boxes, accept);
@@ -101,6 +128,14 @@ void check_set(const std::vector<Box>& boxes, const char* what, Accept accept = 
       ck_assert_msg(k == ref.size(), "%s, %s, %d thread(s): pair %zu is (%d, %d), brute force (%d, %d)",
                     what, name(backend), threads, k, out[k].first, out[k].second, ref[k].first,
                     ref[k].second);
+      // Released (index and buffers freed), built again, and asked for rows.
+      tree.release();
+      tree.build(boxes, backend);
+      b2b::model::PairRows rows;
+      rows.start.assign(5, -7);  // overwritten, not appended to
+      rows.partner.assign(3, -1);
+      tree.overlapping_pairs(accept, threads, rows);
+      check_rows(rows, ref, boxes.size(), what, name(backend), threads);
     }
 }
 

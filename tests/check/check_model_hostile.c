@@ -11,8 +11,11 @@
  *    finalize(INT_MAX) with one small beam, 10^5 groups;
  *  - memory: an update that runs out of memory inside the broad phase's
  *    parallel region (address-space limit) is B2B_ERR_NOMEM with the model
- *    unchanged; the "max_candidates" bound; all nodes on one point refused
- *    in O(n) before the search;
+ *    unchanged, and so is one that runs out while it writes its results
+ *    over the spare set of the update before last (issue 20: the update
+ *    reuses that memory): the last update's contacts, tangents and stats
+ *    stay, bit for bit; the "max_candidates" bound; all nodes on one point
+ *    refused in O(n) before the search;
  *  - the "threads" range message; stats after revert and restore;
  *  - every option changed between updates acts as if set from the start;
  *    reverting the very first update forgets the self-contact arc lengths
@@ -612,6 +615,105 @@ START_TEST(out_of_memory_in_the_narrow_phase) {
 }
 END_TEST
 
+/* The grid of out_of_memory_in_the_narrow_phase: beams 0 .. N-1 along x in
+ * the plane z = 0, beams N .. 2N-1 along y at height z over it (0.15: every
+ * crossing active, radius 0.1); only the first `pressed` of the y beams at
+ * 0.15, the others 3 above. */
+static void grid_x(double *x, int n, int pressed) {
+  const double d = 0.5, len = n * d + 1.0;
+  for (int b = 0; b < 2 * n; ++b) {
+    double *q = x + 6 * (size_t)b;
+    const int i = b % n;
+    if (b < n) {
+      q[0] = -1; q[1] = i * d; q[2] = 0; q[3] = len; q[4] = i * d; q[5] = 0;
+    } else {
+      const double z = i < pressed ? 0.15 : 3.0;
+      q[0] = (i + 0.5) * d; q[1] = -1; q[2] = z;
+      q[3] = (i + 0.5) * d; q[4] = len; q[5] = z;
+    }
+  }
+}
+
+START_TEST(out_of_memory_after_an_update) {
+  /* issue 20: a reusing update writes its contacts' results over the pages
+   * of the update before last while the model keeps the last one's. The
+   * first update here finds 8 N contacts and succeeds; the second, with
+   * every crossing pressed, wants the results of all N^2 = 102,400 (2.8 kB
+   * each) under a limit of 150 MB more than the process holds, runs out in
+   * the parallel evaluation, and must leave every contact of the first
+   * (nodes, info, residual, tangent) and its stats as they were. */
+  if (UNDER_ASAN) {
+    printf("check_model_hostile: out_of_memory_after_an_update skipped under ASan\n");
+    return;
+  }
+  enum { N = 320, PRESSED = 8, NC = N * PRESSED, KK = B2B_PAIR_NDOF * B2B_PAIR_NDOF };
+  char msg[B2B_ERRMSG_LEN] = "";
+  b2b_params *p = tst_params(B2B_LAW_LINEAR, 1e3, 0.0);
+  b2b_model *m = NULL;
+  ok(b2b_model_create(&m, msg, sizeof msg), msg);
+  double *x = malloc(12 * (size_t)N * sizeof(double));
+  for (int b = 0; b < 2 * N; ++b) {
+    int nodes[2] = {2 * b, 2 * b + 1}, beam;
+    ok(b2b_model_add_beam(m, nodes, 2, 0, 0.1, B2B_CURVE_LINEAR, b < N ? 0 : 1, &beam, msg,
+                          sizeof msg), msg);
+  }
+  ok(b2b_model_set_group_pair(m, 0, 1, p, msg, sizeof msg), msg);
+  ok(b2b_model_finalize(m, 4 * N, msg, sizeof msg), msg);
+  ok(b2b_model_set_int(m, "threads", 2, msg, sizeof msg), msg);
+  grid_x(x, N, PRESSED);
+  ok(b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg), msg);
+  ck_assert_int_eq(count_contacts(m), NC);
+  /* what the model reports now, kept before the limit */
+  int counts[2][B2B_MODEL_COUNTS_LEN];
+  double totals[2][B2B_MODEL_TOTALS_LEN];
+  int *nodes = malloc(2 * 8 * (size_t)NC * sizeof(int));
+  double *info = malloc(2 * B2B_PAIR_INFO_LEN * (size_t)NC * sizeof(double));
+  double *res = malloc(2 * B2B_PAIR_NDOF * (size_t)NC * sizeof(double));
+  double *K = malloc(2 * (size_t)KK * NC * sizeof(double));
+  for (int s = 0; s < 2; ++s) {
+    if (s == 1) { /* the update that runs out of memory */
+      grid_x(x, N, N);
+      ck_assert(limit_memory(150));
+      const int st = b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg);
+      ck_assert_msg(st == B2B_ERR_NOMEM, "update under a memory limit: status %d (%s)", st, msg);
+      printf("check_model_hostile: after an update: %s\n", msg);
+      ck_assert_int_eq(count_contacts(m), NC);
+    }
+    ok(b2b_model_stats(m, counts[s], totals[s], msg, sizeof msg), msg);
+    for (int k = 0; k < NC; ++k) {
+      const size_t at = (size_t)s * NC + k;
+      ok(b2b_model_get_contact(m, k, nodes + 8 * at, NULL, info + B2B_PAIR_INFO_LEN * at,
+                               res + B2B_PAIR_NDOF * at, K + (size_t)KK * at, B2B_PAIR_NDOF, msg,
+                               sizeof msg), msg);
+    }
+  }
+  ck_assert_msg(memcmp(counts[0], counts[1], sizeof counts[0]) == 0, "stats counts changed");
+  ck_assert_msg(memcmp(totals[0], totals[1], sizeof totals[0]) == 0, "stats totals changed");
+  ck_assert_msg(memcmp(nodes, nodes + 8 * (size_t)NC, 8 * (size_t)NC * sizeof(int)) == 0,
+                "contact nodes changed");
+  ck_assert_msg(memcmp(info, info + B2B_PAIR_INFO_LEN * (size_t)NC,
+                       B2B_PAIR_INFO_LEN * (size_t)NC * sizeof(double)) == 0, "contact info changed");
+  ck_assert_msg(memcmp(res, res + B2B_PAIR_NDOF * (size_t)NC,
+                       B2B_PAIR_NDOF * (size_t)NC * sizeof(double)) == 0, "residuals changed");
+  ck_assert_msg(memcmp(K, K + (size_t)KK * NC, (size_t)KK * NC * sizeof(double)) == 0,
+                "tangents changed");
+  /* the limit lifted, the same update goes through: all N^2 crossings */
+  struct rlimit rl;
+  getrlimit(RLIMIT_AS, &rl);
+  rl.rlim_cur = rl.rlim_max;
+  ck_assert(setrlimit(RLIMIT_AS, &rl) == 0);
+  ok(b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg), msg);
+  ck_assert_int_eq(count_contacts(m), N * N);
+  free(K);
+  free(res);
+  free(info);
+  free(nodes);
+  free(x);
+  b2b_model_destroy(&m);
+  b2b_params_destroy(&p);
+}
+END_TEST
+
 START_TEST(candidate_bound) {
   /* finding 5: no bound on the candidates of an update. 300 stacked
    * segments: 44,850 candidates. */
@@ -856,6 +958,7 @@ int main(void) {
   tcase_add_test(sizes, many_groups);
   tcase_add_test(sizes, out_of_memory_in_the_broad_phase);
   tcase_add_test(sizes, out_of_memory_in_the_narrow_phase);
+  tcase_add_test(sizes, out_of_memory_after_an_update);
   tcase_add_test(sizes, candidate_bound);
   tcase_add_test(sizes, all_nodes_on_one_point);
   suite_add_tcase(s, sizes);

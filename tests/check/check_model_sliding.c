@@ -8,7 +8,10 @@
  *    would stick with T = 0), and T changes across joints no more than on
  *    the steps between them;
  *  - the model's contact is bit for bit what a host gets doing the same
- *    bookkeeping by hand with b2b_pair_eval and b2b_pair_history_handover. */
+ *    bookkeeping by hand with b2b_pair_eval and b2b_pair_history_handover,
+ *    its tangent included (the model keeps a tangent whose triangles hold
+ *    the same bits packed, and a slipping contact's, not symmetric, whole:
+ *    src/model/contact_result.hpp; both kinds occur here). */
 #include <math.h>
 #include <stdlib.h>
 #include <stdio.h>
@@ -113,7 +116,7 @@ typedef struct {
 } by_hand;
 
 static int eval_pair(const slide_scene *s, const b2b_params *p, const int seg[2], const double *hist,
-                     double *hist_new, double info[32], double res[24]) {
+                     double *hist_new, double info[32], double res[24], double K[576]) {
   char msg[B2B_ERRMSG_LEN] = "";
   int segs[6], st, nh;
   double X[24];
@@ -121,7 +124,7 @@ static int eval_pair(const slide_scene *s, const b2b_params *p, const int seg[2]
   seg_patch(s, 1, seg[1], s->x, segs + 3, X + 12);
   const double radii[2] = {s->ra, s->rb};
   ok(b2b_params_history_size(p, &nh, msg, sizeof msg), msg);
-  ok(b2b_pair_eval(p, segs, X, NULL, radii, hist, hist_new, nh, &st, info, res, NULL, 24, msg,
+  ok(b2b_pair_eval(p, segs, X, NULL, radii, hist, hist_new, nh, &st, info, res, K, 24, msg,
                    sizeof msg), msg);
   return st;
 }
@@ -130,13 +133,13 @@ static int exit_dir(double t) { return t >= 1.0 - 1e-12 ? 1 : (t < -1.0 ? -1 : 0
 
 /* One step by hand; returns the contact status of the owner found. */
 static int hand_step(const slide_scene *s, const b2b_params *p, by_hand *h, double info[32],
-                     double res[24], double hist_new[16], int *hops) {
+                     double res[24], double K[576], double hist_new[16], int *hops) {
   char msg[B2B_ERRMSG_LEN] = "";
   int nh;
   ok(b2b_params_history_size(p, &nh, msg, sizeof msg), msg);
   double hist[16];
   memcpy(hist, h->hist, sizeof hist);
-  int st = eval_pair(s, p, h->seg, hist, hist_new, info, res);
+  int st = eval_pair(s, p, h->seg, hist, hist_new, info, res, K);
   while (st == B2B_CONTACT_OUTSIDE) {
     const int d[2] = {exit_dir(info[B2B_INFO_XI]), exit_dir(info[B2B_INFO_ETA])};
     ck_assert_msg(d[0] || d[1], "by hand: outside but inside both segments");
@@ -155,7 +158,7 @@ static int hand_step(const slide_scene *s, const b2b_params *p, by_hand *h, doub
       h->seg[beam] = to;
       ++*hops;
     }
-    st = eval_pair(s, p, h->seg, hist, hist_new, info, res);
+    st = eval_pair(s, p, h->seg, hist, hist_new, info, res, K);
   }
   return st;
 }
@@ -172,33 +175,40 @@ static void slide(int kind, int closed, int slide_b) {
   memset(&h, 0, sizeof h);
   double theta = theta0, T_prev[3] = {0, 0, 0}, worst_cross = 0.0, worst_between = 0.0;
   int step = 0, hops_model = 0, hops_hand = 0, skips = 0, crossings = 0, seg_prev = -1;
+  int symmetric = 0;  /* steps whose tangent is symmetric bit for bit */
   int segb_prev = -1;
   while (theta <= theta1) {
     const double frac = (theta - theta0) / (theta1 - theta0);
     place(&s, theta, slide_b ? 0.5 - 1.0 * frac : 0.0);
     ok(b2b_model_update(m, s.x, 3, s.n_nodes, 1, msg, sizeof msg), msg);
     int n, counts[16], pair[4];
-    double info[32], res[24];
+    double info[32], res[24], K[576];
     ok(b2b_model_contact_count(m, &n, msg, sizeof msg), msg);
     ok(b2b_model_stats(m, counts, NULL, msg, sizeof msg), msg);
     ck_assert_msg(n == 1, "%s %s: step %d (theta %.3f): %d active contacts", tst_kind_name(kind),
                   closed ? "ring" : "arc", step, theta, n);
     ck_assert_int_eq(counts[B2B_COUNT_LOST], 0);
-    ok(b2b_model_get_contact(m, 0, NULL, pair, info, res, NULL, 0, msg, sizeof msg), msg);
+    ok(b2b_model_get_contact(m, 0, NULL, pair, info, res, K, 24, msg, sizeof msg), msg);
     hops_model += counts[B2B_COUNT_HANDOVERS];
     /* by hand */
-    double hinfo[32], hres[24], hnew[16];
+    double hinfo[32], hres[24], hK[576], hnew[16];
     if (step == 0) {
       h.seg[0] = pair[1];  /* the host finds its first contact by its own search */
       h.seg[1] = pair[3];
     }
-    const int hst = hand_step(&s, p, &h, hinfo, hres, hnew, &hops_hand);
+    const int hst = hand_step(&s, p, &h, hinfo, hres, hK, hnew, &hops_hand);
     ck_assert_int_eq(hst, B2B_CONTACT_ACTIVE);
     ck_assert_msg(pair[1] == h.seg[0] && pair[3] == h.seg[1],
                   "step %d: model pair (%d, %d), by hand (%d, %d)", step, pair[1], pair[3],
                   h.seg[0], h.seg[1]);
     ck_assert_msg(memcmp(info, hinfo, sizeof info) == 0 && memcmp(res, hres, sizeof res) == 0,
                   "step %d: the model's contact differs from the bookkeeping by hand", step);
+    ck_assert_msg(memcmp(K, hK, sizeof K) == 0,
+                  "step %d: the model's tangent differs from the bookkeeping by hand", step);
+    int sym = 1;
+    for (int c = 0; c < 24 && sym; ++c)
+      for (int r = 0; r < c && sym; ++r) sym = memcmp(&K[r + 24 * c], &K[c + 24 * r], 8) == 0;
+    symmetric += sym;
     /* friction */
     const double *T = info + B2B_INFO_TANGENTIAL_FORCE;
     const double fn = info[B2B_INFO_NORMAL_FORCE], tn = sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]);
@@ -236,12 +246,14 @@ static void slide(int kind, int closed, int slide_b) {
     ++step;
     theta += step % 9 == 0 ? 0.3 : 0.03;
   }
-  printf("%-22s %s%s: %d steps, A's contact segment changed %d times (%d steps skipped a "
-         "segment), %d handover hops (by hand %d); |dT| / (mu f_N dtheta') at most %.2f across "
-         "joints, %.2f between\n",
+  printf("%-22s %s%s: %d steps (%d with a symmetric tangent), A's contact segment changed %d "
+         "times (%d steps skipped a segment), %d handover hops (by hand %d); |dT| / (mu f_N "
+         "dtheta') at most %.2f across joints, %.2f between\n",
          tst_kind_name(kind), closed ? "ring across the seam" : "open arc",
-         slide_b ? ", sliding along B too" : "", step, crossings, skips, hops_model, hops_hand,
-         worst_cross, worst_between);
+         slide_b ? ", sliding along B too" : "", step, symmetric, crossings, skips, hops_model,
+         hops_hand, worst_cross, worst_between);
+  ck_assert_msg(symmetric >= 1 && symmetric < step, "%d of %d tangents symmetric: both forms "
+                "expected", symmetric, step);
   ck_assert_msg(worst_cross <= 1.5 * worst_between + 0.05,
                 "T jumps more across joints (%.3f) than between them (%.3f)", worst_cross,
                 worst_between);
