@@ -1,5 +1,11 @@
 #include "search.hpp"
 
+#ifdef B2B_HAVE_BOOST_GEOMETRY
+#include <boost/geometry/geometries/box.hpp>
+#include <boost/geometry/geometries/point.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#endif
+
 #include <algorithm>
 #include <cmath>
 
@@ -30,6 +36,42 @@ double box_distance(const Box& a, const Box& b) {
   return d;
 }
 
+#ifdef B2B_HAVE_BOOST_GEOMETRY
+struct BoxTree::RTreeIndex {
+  using Point = boost::geometry::model::point<double, 3, boost::geometry::cs::cartesian>;
+  using BBox = boost::geometry::model::box<Point>;
+  using Value = std::pair<BBox, int>;
+  static BBox to_bbox(const Box& b) {
+    return BBox(Point(b.lo[0], b.lo[1], b.lo[2]), Point(b.hi[0], b.hi[1], b.hi[2]));
+  }
+  boost::geometry::index::rtree<Value, boost::geometry::index::rstar<16>> tree;
+};
+
+void BoxTree::rtree_overlaps(int i, std::vector<int>& out) const {
+  struct Sink {  // an output iterator that keeps the later boxes
+    int i;
+    std::vector<int>* out;
+    Sink& operator*() { return *this; }
+    Sink& operator++() { return *this; }
+    Sink& operator++(int) { return *this; }
+    Sink& operator=(const RTreeIndex::Value& v) {
+      if (v.second > i) out->push_back(v.second);
+      return *this;
+    }
+  };
+  rtree_->tree.query(boost::geometry::index::intersects(RTreeIndex::to_bbox((*boxes_)[i])),
+                     Sink{i, &out});
+}
+#else
+struct BoxTree::RTreeIndex {};
+void BoxTree::rtree_overlaps(int, std::vector<int>&) const {}
+#endif
+
+BoxTree::BoxTree() = default;
+BoxTree::~BoxTree() = default;
+BoxTree::BoxTree(BoxTree&&) noexcept = default;
+BoxTree& BoxTree::operator=(BoxTree&&) noexcept = default;
+
 void BoxTree::build(const std::vector<Box>& boxes, Backend backend) {
   boxes_ = &boxes;
   nodes_.clear();
@@ -38,14 +80,15 @@ void BoxTree::build(const std::vector<Box>& boxes, Backend backend) {
 #ifdef B2B_HAVE_BOOST_GEOMETRY
   if (backend == Backend::kRTree) {
     use_rtree_ = true;
-    rtree_.clear();  // before the new one is packed: one tree in memory at a time
-    std::vector<BValue> values;
+    rtree_.reset();  // before the new one is packed: one tree in memory at a time
+    std::vector<RTreeIndex::Value> values;
     values.reserve(boxes.size());
-    for (int k = 0; k < n; ++k) values.emplace_back(to_bbox(boxes[k]), k);
-    rtree_ = decltype(rtree_)(values.begin(), values.end());  // the packing constructor
+    for (int k = 0; k < n; ++k) values.emplace_back(RTreeIndex::to_bbox(boxes[k]), k);
+    // the packing constructor
+    rtree_.reset(new RTreeIndex{decltype(RTreeIndex::tree)(values.begin(), values.end())});
     return;
   }
-  rtree_.clear();
+  rtree_.reset();
 #else
   (void)backend;
 #endif
@@ -125,9 +168,7 @@ void BoxTree::release() {
   std::vector<int>().swap(order_);
   std::vector<Box>().swap(sorted_);
   std::vector<Node>().swap(nodes_);
-#ifdef B2B_HAVE_BOOST_GEOMETRY
-  rtree_.clear();
-#endif
+  rtree_.reset();
 }
 
 // Chunk c holds the partners of boxes c * kQueryChunk onwards, each box's

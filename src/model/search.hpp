@@ -23,14 +23,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
-
-#ifdef B2B_HAVE_BOOST_GEOMETRY
-#include <boost/geometry/geometries/box.hpp>
-#include <boost/geometry/geometries/point.hpp>
-#include <boost/geometry/index/rtree.hpp>
-#endif
 
 namespace b2b {
 namespace model {
@@ -68,6 +63,10 @@ struct PairRows {
 class BoxTree {
  public:
   enum class Backend { kBvh, kRTree };
+  BoxTree();
+  ~BoxTree();  // in search.cpp, where the R-tree's type is complete
+  BoxTree(BoxTree&&) noexcept;
+  BoxTree& operator=(BoxTree&&) noexcept;
   // The backend an update uses: the R-tree when b2b is built with it.
   static Backend default_backend() {
 #ifdef B2B_BROAD_PHASE_RTREE
@@ -113,15 +112,13 @@ class BoxTree {
   std::vector<Box> sorted_;  // BVH: the boxes in that order
   std::vector<Node> nodes_;
   std::vector<Chunk> chunks_;  // kept from search to search
-#ifdef B2B_HAVE_BOOST_GEOMETRY
-  using BPoint = boost::geometry::model::point<double, 3, boost::geometry::cs::cartesian>;
-  using BBox = boost::geometry::model::box<BPoint>;
-  using BValue = std::pair<BBox, int>;
-  boost::geometry::index::rtree<BValue, boost::geometry::index::rstar<16>> rtree_;
-  static BBox to_bbox(const Box& b) {
-    return BBox(BPoint(b.lo[0], b.lo[1], b.lo[2]), BPoint(b.hi[0], b.hi[1], b.hi[2]));
-  }
-#endif
+  // Boost.Geometry's R-tree, defined in search.cpp only: its headers cost a
+  // second of compile time in every file that included this one (the whole
+  // model layer, through model.hpp), in every build configuration.
+  struct RTreeIndex;
+  std::unique_ptr<RTreeIndex> rtree_;  // null: none built
+  // Appends to out every box j > i that overlaps box i, in the R-tree's order.
+  void rtree_overlaps(int i, std::vector<int>& out) const;
   struct Centre {
     double c[3];  // twice the box's centre
     int index;
@@ -171,23 +168,12 @@ void BoxTree::partners(int i, Accept& accept, std::vector<int>& out) const {
 
 template <class Accept>
 void BoxTree::rtree_partners(int i, Accept& accept, std::vector<int>& out) const {
-#ifdef B2B_HAVE_BOOST_GEOMETRY
-  struct Sink {  // an output iterator that keeps the accepted later boxes
-    int i;
-    Accept* accept;
-    std::vector<int>* out;
-    Sink& operator*() { return *this; }
-    Sink& operator++() { return *this; }
-    Sink& operator++(int) { return *this; }
-    Sink& operator=(const BValue& v) {
-      if (v.second > i && (*accept)(i, v.second)) out->push_back(v.second);
-      return *this;
-    }
-  };
-  rtree_.query(boost::geometry::index::intersects(to_bbox((*boxes_)[i])), Sink{i, &accept, &out});
-#else
-  (void)i, (void)accept, (void)out;
-#endif
+  const size_t from = out.size();
+  rtree_overlaps(i, out);
+  size_t kept = from;
+  for (size_t k = from; k < out.size(); ++k)
+    if (accept(i, out[k])) out[kept++] = out[k];
+  out.resize(kept);
 }
 
 }  // namespace model
