@@ -120,8 +120,17 @@ void tst_gather_patch(int kind, int n_nodes, int closed, int segment, const doub
     for (int i = 0; i < 3; ++i) patch[3 * k + i] = nodes[k] >= 0 ? coords[3 * nodes[k] + i] : NAN;
 }
 
+/* Whether a passed assertion is recorded (test_support.h, ck_assert_msg):
+ * yes unless the running suite's runner does not fork. */
+static int tst_marks = 1;
+
+void tst_mark_point(const char *file, int line) {
+  if (tst_marks) _mark_point(file, line);
+}
+
 int tst_run_suite(Suite *suite) {
   SRunner *runner = srunner_create(suite);
+  tst_marks = srunner_fork_status(runner) != CK_NOFORK;
   srunner_run_all(runner, CK_NORMAL);
   const int failed = srunner_ntests_failed(runner);
   srunner_free(runner);
