@@ -11,6 +11,7 @@
  * (check_model_search) reach
  * the tree through the public API; this suite reaches the cases a scene of
  * fibres does not. */
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -67,13 +68,29 @@ std::vector<Box> random_boxes(int n, double span, double size, double scale, dou
   return boxes;
 }
 
+// Every pair (i, j), i < j, whose boxes overlap and that accept takes, in
+// order of i, then j. Brute force, but for the pairs whose x-extents are
+// apart: with the boxes in order of lo[0], each is tested against those that
+// follow it until one starts beyond its hi[0] (every box has lo <= hi, so
+// none after that one can meet it on x). Testing all n^2 / 2 pairs was most
+// of this suite's time (12000 boxes in rebuild_smaller: 72 million pairs,
+// minutes under valgrind); the touching test checks this reference against
+// the grid's count.
 template <class Accept>
 Pairs brute_force(const std::vector<Box>& boxes, Accept accept) {
-  Pairs out;
   const int n = static_cast<int>(boxes.size());
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j)
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&boxes](int a, int b) {
+    return boxes[a].lo[0] < boxes[b].lo[0] || (boxes[a].lo[0] == boxes[b].lo[0] && a < b);
+  });
+  Pairs out;
+  for (int p = 0; p < n; ++p)
+    for (int q = p + 1; q < n && boxes[order[q]].lo[0] <= boxes[order[p]].hi[0]; ++q) {
+      const int i = std::min(order[p], order[q]), j = std::max(order[p], order[q]);
       if (b2b::model::boxes_overlap(boxes[i], boxes[j]) && accept(i, j)) out.emplace_back(i, j);
+    }
+  std::sort(out.begin(), out.end());
   return out;
 }
 
