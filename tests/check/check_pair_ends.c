@@ -623,6 +623,81 @@ static void straight_patch(int kind, const double base[3], const double dir[3], 
   }
 }
 
+/* A tip pushed on end-on, with friction: straight A tilted 1 degree off the
+ * vertical, its held end (either) pressed 0.01 into B (along x, bent),
+ * every kind pair, stick and slip, the tangent against finite differences
+ * as in fd_friction_stick_and_slip (the linear law: the slides go with the
+ * force, and the quadratic law's would turn the normal too far). A's tangent
+ * lies within about 6 degrees of the normal, so the friction frame is built
+ * from B's tangent (src/pair/friction.cpp, friction_force): the one case of
+ * the frame whose tangent terms no other test reached but by chance (a
+ * random network of check_model_threads). */
+START_TEST(fd_friction_tip_end_on) {
+  reset();
+  tst_rng rng;
+  tst_rng_seed(&rng, 16005);
+  /* radii large against the slides (at most 0.017 in all): the normal turns
+   * by at most 2 degrees */
+  const double rA = 0.3, rB = 0.2, tilt = 1.0 * kPi / 180.0;
+  int count[3] = {0, 0, 0};
+  b2b_params *p = tst_params_friction(B2B_LAW_LINEAR, EPS_N, 0.0, MU, EPS_T);
+  b2b_params *p0 = tst_params(B2B_LAW_LINEAR, EPS_N, 0.0);
+  for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+    for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb)
+      for (int end = -1; end <= 1; end += 2)
+        for (int target = ST_STICK; target <= ST_SLIP; ++target) {
+          tst_pair_spec spec = {{ka, kb}, {0, 0}, {0, 0}, {rA, rB}};
+          /* A leaves its held end upwards: from its start (end -1) along
+           * +dir, or into its end (end +1) along -dir */
+          const double phi = tst_uniform(&rng, 0.0, 2.0 * kPi);
+          const double up[3] = {sin(tilt) * cos(phi), sin(tilt) * sin(phi), cos(tilt)};
+          double dir_a[3], base_a[3], X0[24], X1[24], X2[24], x[9];
+          /* B along x, bent in the horizontal plane (y = 0.3 x^2 at its
+           * nodes: the frame's tangent terms carry B's second derivative);
+           * A's held node above B's point at eta = 0.1 (x = 0.05) */
+          const double dir_b[3] = {1, 0, 0},
+                       base_b[3] = {tst_kind_family(kb) == TST_CENTRED ? 0.0 : -0.5, 0, 0};
+          straight_patch(kb, base_b, dir_b, 1.0, X0 + 12);
+          for (int k = 0; k < 4; ++k) X0[12 + 3 * k + 1] += 0.3 * X0[12 + 3 * k] * X0[12 + 3 * k];
+          tst_eval(kb, 0, 0, X0 + 12, NULL, 0.1, x, NULL, NULL);
+          for (int i = 0; i < 3; ++i) {
+            dir_a[i] = end < 0 ? up[i] : -up[i];
+            base_a[i] = i < 2 ? x[i] : 0.0;
+            if (end > 0) base_a[i] -= 0.1 * dir_a[i];
+          }
+          straight_patch(ka, base_a, dir_a, 0.1, X0);
+          /* A's end point (a midpoint segment's is off the node) 0.01 deep */
+          tst_eval(ka, 0, 0, X0, NULL, end, x, NULL, NULL);
+          for (int k = 0; k < 4; ++k) X0[3 * k + 2] += rA + rB - 0.01 - x[2];
+          const double tang[12] = {1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0};
+          const int ends[2] = {end, 0};
+          double hist[HLEN], info[32], R[24];
+          if (!prepare_friction(&rng, p, &spec, tang, ends, X0,
+                                target == ST_STICK ? 0.4 : 2.0,
+                                target == ST_STICK ? 0.3 : 2.5, X1, X2, hist))
+            continue;
+          char what[200];
+          describe(what, sizeof what, "friction, tip end-on", &spec, ends, B2B_LAW_LINEAR);
+          /* the premise: A's tangent within 6 degrees of the normal */
+          ck_assert_int_eq(eval_ends(p, &spec, X2, tang, ends, hist, NULL, info, R, NULL),
+                           B2B_CONTACT_ACTIVE);
+          tst_eval(ka, 0, 0, X2, NULL, end, x, NULL, NULL);
+          const double tn = dot3(info + B2B_INFO_NORMAL, x + 3) / norm3(x + 3);
+          ck_assert_msg(1.0 - tn * tn < 1e-2, "%s: A's tangent %g degrees off the normal",
+                        what, acos(fabs(tn)) * 180.0 / kPi);
+          const int st = check_friction(p, p0, &spec, X2, tang, ends, hist, what);
+          if (st > 0) ++count[st];
+        }
+  b2b_params_destroy(&p);
+  b2b_params_destroy(&p0);
+  printf("tip end-on, friction: %d stick, %d slip (%d skipped); worst rel. error of the "
+         "tangent %.2e, of its friction part %.2e\n",
+         count[ST_STICK], count[ST_SLIP], n_skipped, worst_kf, worst_ff);
+  ck_assert_msg(count[ST_STICK] >= 16 && count[ST_SLIP] >= 16, "only %d stick, %d slip checked",
+                count[ST_STICK], count[ST_SLIP]);
+}
+END_TEST
+
 /* A node of straight A at height h above straight B (along x), A crossing
  * B's direction at any angle, 0 included: ACTIVE, gap h - r_A - r_B, the
  * foot of the node on B, the normal +z. The free pair is PARALLEL at 0. */
@@ -853,6 +928,7 @@ static Suite *make_suite(void) {
   tcase_add_test(fd, fd_frictionless_all_kinds_all_ends);
   tcase_add_test(fd, fd_friction_stick_and_slip);
   tcase_add_test(fd, committed_friction_force_is_kept);
+  tcase_add_test(fd, fd_friction_tip_end_on);
   suite_add_tcase(s, fd);
   TCase *ad = tcase_create("ad_reference");
   tcase_set_timeout(ad, 300);
