@@ -509,9 +509,10 @@ static void slide_run(int kind, int nr) {
 }
 
 START_TEST(slide_across_ranks) {
+  /* quick mode: each kind on 2 or on 3 ranks, alternately */
   for (int kind = 0; kind < B2B_CURVE_KIND_COUNT; ++kind) {
-    slide_run(kind, 2);
-    slide_run(kind, 3);
+    if (!tst_quick() || kind % 2 == 0) slide_run(kind, 2);
+    if (!tst_quick() || kind % 2 == 1) slide_run(kind, 3);
   }
 }
 END_TEST

@@ -26,7 +26,9 @@ typedef struct {
 static void drift_setup(drift *d, uint64_t seed) {
   tst_rng rng;
   tst_rng_seed(&rng, seed);
-  tst_network(&rng, 40, 9, 0.5, 2.5, 0.1, 0.3, 6, 2, &d->sc);
+  /* quick mode: 20 fibres in the same cube (rings and self-contact among
+   * them), about a quarter of the pairs */
+  tst_network(&rng, tst_quick() ? 20 : 40, 9, 0.5, 2.5, 0.1, 0.3, 6, 2, &d->sc);
   const size_t n = 3 * (size_t)d->sc.n_nodes;
   d->x0 = malloc(n * sizeof(double));
   d->v = malloc(n * sizeof(double));

@@ -267,6 +267,8 @@ START_TEST(fd_frictionless_all_kinds_all_ends) {
           double X[24], tang[12];
           const double dist = 0.35 - tst_uniform(&rng, law ? -0.03 : 0.02, 0.1);
           make_end_config(&rng, &spec, ends_list[e], ka + kb + e + law, dist, X, tang);
+          /* quick mode: half of the same configurations */
+          if (tst_quick() && (ka + kb + e + law) % 2) continue;
           char what[200];
           describe(what, sizeof what, "frictionless", &spec, ends_list[e], law);
           if (check_frictionless(p, &spec, X, tang, ends_list[e], what)) {
@@ -402,6 +404,8 @@ START_TEST(fd_friction_stick_and_slip) {
             if (!prepare_friction(&rng, p, &spec, tang, ends_list[e], X0, first, second, X1, X2,
                                   hist))
               continue;
+            /* quick mode: half of the same configurations */
+            if (tst_quick() && (ka + kb + e + law) % 2) continue;
             char what[200];
             describe(what, sizeof what, "friction", &spec, ends_list[e], law);
             const int st = check_friction(p, p0, &spec, X2, tang, ends_list[e], hist, what);

@@ -3,7 +3,9 @@
 #include "ring_accuracy.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 const int tst_kinds[TST_KINDS_MAX] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 typedef char tst_kinds_holds_every_kind[B2B_CURVE_KIND_COUNT <= TST_KINDS_MAX ? 1 : -1];
@@ -120,6 +122,11 @@ void tst_gather_patch(int kind, int n_nodes, int closed, int segment, const doub
     for (int i = 0; i < 3; ++i) patch[3 * k + i] = nodes[k] >= 0 ? coords[3 * nodes[k] + i] : NAN;
 }
 
+int tst_quick(void) {
+  const char *v = getenv("B2B_TEST_QUICK");
+  return v != NULL && v[0] != '\0' && strcmp(v, "0") != 0;
+}
+
 /* Whether a passed assertion is recorded (test_support.h, ck_assert_msg):
  * yes unless the running suite's runner does not fork. */
 static int tst_marks = 1;
@@ -130,6 +137,8 @@ void tst_mark_point(const char *file, int line) {
 
 int tst_run_suite(Suite *suite) {
   SRunner *runner = srunner_create(suite);
+  if (tst_quick())
+    printf("B2B_TEST_QUICK: a suite with a quick mode runs fewer configurations, the same checks\n");
   tst_marks = srunner_fork_status(runner) != CK_NOFORK;
   srunner_run_all(runner, CK_NORMAL);
   const int failed = srunner_ntests_failed(runner);

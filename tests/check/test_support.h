@@ -118,6 +118,16 @@ void tst_ring_nodes(int n, double radius, int alternating, double *coords);
 void tst_gather_patch(int kind, int n_nodes, int closed, int segment, const double *coords,
                       double patch[12], int *start_rule, int *end_rule);
 
+/* Whether the suites run in their quick mode: environment variable
+ * B2B_TEST_QUICK set and not "0". Only scripts/quickstart.sh memcheck sets
+ * it (valgrind makes the suites' sweeps slow); every other step runs them in
+ * full. A quick mode runs the same checks on fewer configurations (a coarser
+ * sweep, fewer steps, a sparser scene); every library line its full run
+ * reaches, its quick run or another suite memcheck runs must reach
+ * (scripts/quickstart.sh coverage checks it for each suite labelled "quick",
+ * tests/CMakeLists.txt: B2B_QUICK_SUITES). */
+int tst_quick(void);
+
 /* Runs one suite (CK_NORMAL) and returns the process exit status. */
 int tst_run_suite(Suite *suite);
 
