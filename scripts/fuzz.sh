@@ -3,7 +3,7 @@
 # and runs them one after the other, on the seed corpora of
 # tests/fuzz/corpus/<target>/ (which also hold the reproducers of every
 # defect found: each is run first, so a regression fails at once):
-#   short            each target for 30 s (FUZZ_SECONDS overrides), as many
+#   short            each target for 15 s (FUZZ_SECONDS overrides), as many
 #                    at a time as there are cores (FUZZ_PARALLEL overrides):
 #                    the CI step; exits 1 if any target crashes or breaks the
 #                    contract (the input is kept in build-fuzz/artifacts/)
@@ -23,7 +23,7 @@ cd "$(dirname "$0")/.."
 
 mode=${1:-}
 case "$mode" in
-  short) seconds=${FUZZ_SECONDS:-30} ;;
+  short) seconds=${FUZZ_SECONDS:-15} ;;
   long) seconds=${2:-900} ;;
   *)
     echo "usage: $0 short | long [seconds per target]" >&2
