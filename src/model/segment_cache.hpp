@@ -55,7 +55,7 @@ class SegmentCache {
   // windows of the candidates in the order the update asks for their
   // segments, are within 25% of those of the largest allowed, which is
   // bounded by memory: all caches together at most about 64 bytes per
-  // candidate pair (a few times the candidate list), and at least 32 sets.
+  // candidate pair (an entry is about 2 kB), and at least 32 sets.
   static int choose_sets(const PairRows& candidates, int n_segments, int threads);
   static constexpr int kWays = 2;
 
