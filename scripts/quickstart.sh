@@ -15,7 +15,8 @@
 #              baselines in tests/abi/ (RelWithDebInfo build in
 #              build-debinfo/, shared with memcheck; abigail-tools)
 #   memcheck   the library's suites (Check and Fortran) under valgrind
-#              memcheck (build-debinfo/; valgrind)
+#              memcheck, the slowest in their quick mode (build-debinfo/;
+#              valgrind)
 #   tsan       the thread tests check_pair_threads and check_model_threads
 #              built by clang with ThreadSanitizer (build-tsan/)
 #   clang      all C and C++ (the library with -Werror, its tests, the
@@ -32,9 +33,9 @@
 #   mpi        the MPI/PETSc example host on 1 and 2 ranks
 #              (scripts/mpi_example.sh quick, in build/; petsc-dev, Open MPI)
 # and, not in CI:
-#   coverage   checks by gcov that the tests memcheck and sanitize leave out
-#              reach no library line that the tests they run do not
-#              (build-coverage/)
+#   coverage   checks by gcov that the tests memcheck and sanitize leave out,
+#              and the quick modes, lose no library line that the tests they
+#              run reach (build-coverage/)
 # It first installs the Debian packages it needs if any is missing (with sudo
 # when not run as root), so it works as is on a fresh Debian 12 machine.
 set -euo pipefail
@@ -215,32 +216,67 @@ case "$mode" in
     #    allocator runs under them; its 10^5-group and 10^5-contact scenes
     #    take minutes here. It runs under ASan+UBSan (the limits skipped
     #    there) and in every other mode.
-    CK_FORK=no ctest --test-dir build-debinfo --output-on-failure -j "$jobs" -T memcheck -L memcheck
+    # B2B_TEST_QUICK=1: the suites labelled quick (tests/CMakeLists.txt,
+    # B2B_QUICK_SUITES) run the same checks on fewer configurations, which
+    # every other step runs in full: check_model_threads' 500 fibres in a
+    # cube of 12, not 5 (a ninth of the pairs); check_model_state's networks
+    # of 20 fibres, not 40; check_model_line's all-angle sweep in steps of
+    # 0.3 degrees, not 0.1; check_model_partition's slide of each kind on 2
+    # or on 3 ranks, not both; half of the random finite-difference
+    # configurations of check_pair_ends and check_pair_line; every third
+    # angle per kind pair in check_pair_line_extremes. Every library line
+    # the full suites reach, memcheck still reaches (scripts/quickstart.sh
+    # coverage checks it; what two quick runs leave to the other suites is a
+    # random network's rare events, such as a pair found parallel, which a
+    # smaller network meets elsewhere or not at all). With CK_FORK=no,
+    # Check's record of every passed assertion is skipped as well
+    # (tests/check/test_support.h): a write(2) each, which was most of the
+    # bad-input suites' time under valgrind. The tests of this step, one run
+    # each on the same library (doc/verification.md, CI): 507 s of CPU and
+    # 345 s of wall time with the tests before the quick modes, 113.5 s and
+    # 57.6 s with them.
+    CK_FORK=no B2B_TEST_QUICK=1 ctest --test-dir build-debinfo --output-on-failure -j "$jobs" \
+      -T memcheck -L memcheck
     ;;
   coverage)
     # Not a CI step: it checks what memcheck and sanitize leave out. Each
     # check and fortran test, and the demo tests that stand for
     # demo_contact_tangent_many_contacts, runs alone in a gcc --coverage
     # build (build-coverage/); gcov lists the lines of the library's sources
-    # (src/, include/) it reached. Then every test without the memcheck
-    # label (but the stop_without_ierr programs and check_model_hostile,
-    # which memcheck leaves out for other reasons) must reach no line that
-    # the memcheck tests do not reach, and demo_contact_tangent_many_contacts
-    # none that the others do not; exits 1, naming the lines, if one does.
+    # (src/, include/) it reached. The suites with a quick mode (label quick,
+    # tests/CMakeLists.txt: B2B_QUICK_SUITES) run a second time as memcheck
+    # runs them, with B2B_TEST_QUICK=1. Then, with "the memcheck tests as
+    # memcheck runs them" the memcheck-labelled tests, the quick ones' quick
+    # runs (but the stop_without_ierr programs and check_model_hostile,
+    # which memcheck leaves out for other reasons):
+    #  - each line a quick suite's full run reaches, its quick run or another
+    #    of the memcheck tests as memcheck runs them must reach, so memcheck
+    #    reaches every line it reached before the quick modes (the lines a
+    #    quick run leaves to the others are counted and printed: a random
+    #    network's rare events, such as a pair found parallel, are reached in
+    #    one run by chance and not in a smaller one);
+    #  - every test without the memcheck label (but those programs) must
+    #    reach no line that the memcheck tests as memcheck runs them do not;
+    #  - demo_contact_tangent_many_contacts none that the others do not.
+    # Exits 1, naming the lines (the first 20 of each test), if one does not
+    # hold.
     dir=build-coverage
     cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g --coverage" \
       -DCMAKE_SHARED_LINKER_FLAGS=--coverage -DCMAKE_EXE_LINKER_FLAGS=--coverage
     cmake --build "$dir" -j "$jobs"
     names() { ctest --test-dir "$dir" -N "$@" | sed -n 's/^ *Test *#[0-9]*: //p'; }
-    lines=$dir/coverage-lines
-    rm -rf "$lines"
-    mkdir -p "$lines"
-    demo=(demo_scene_many_contacts demo_contact_tangent_sliding_friction
-      demo_contact_tangent_friction_pull demo_contact_tangent_crossed_30_inside
-      demo_contact_tangent_many_contacts)
-    for t in $(names -L 'check|fortran' -E 'stop_without_ierr|^check_model_hostile$') "${demo[@]}"; do
+    lines=$dir/coverage-lines       # a file per test: its full run's lines
+    quick=$dir/coverage-lines-quick # a file per quick suite: its quick run's
+    rm -rf "$lines" "$quick"
+    mkdir -p "$lines" "$quick"
+    # reach <test> <file> [VAR=value ...]: runs the test alone (with the
+    # variables set) and writes the library lines it reached to <file>.
+    reach() {
+      local t=$1 out=$2
+      shift 2
       find "$dir" -name '*.gcda' -delete
-      ctest --test-dir "$dir" -R "^$t\$" >/dev/null || { echo "quickstart coverage: $t failed" >&2; exit 1; }
+      env "$@" ctest --test-dir "$dir" -R "^$t\$" >/dev/null ||
+        { echo "quickstart coverage: $t failed${*:+ ($*)}" >&2; exit 1; }
       # gcov -t: the annotated sources on stdout, each after a line
       # "-: 0:Source:<path>"; an executed line starts with its count.
       # (gcov writes its .gcov files into the directory it runs in.)
@@ -250,15 +286,39 @@ case "$mode" in
         /^ *-: *0:Source:/ { sub(/^ *-: *0:Source:/, ""); file = $0; next }
         /^ *[0-9]+\*?: *[0-9]+:/ && (index(file, root "src/") == 1 || index(file, root "include/") == 1) {
           split($0, a, ":"); gsub(/ /, "", a[2]); print substr(file, length(root) + 1) ":" a[2] }' |
-        sort -u >"$lines/$t"
-      echo "quickstart coverage: $t reaches $(wc -l <"$lines/$t") lines of src/ and include/"
+        sort -u >"$out"
+      echo "quickstart coverage: $t${*:+ ($*)} reaches $(wc -l <"$out") lines of src/ and include/"
+    }
+    demo=(demo_scene_many_contacts demo_contact_tangent_sliding_friction
+      demo_contact_tangent_friction_pull demo_contact_tangent_crossed_30_inside
+      demo_contact_tangent_many_contacts)
+    for t in $(names -L 'check|fortran' -E 'stop_without_ierr|^check_model_hostile$') "${demo[@]}"; do
+      reach "$t" "$lines/$t"
+    done
+    mapfile -t quick_suites < <(names -L quick)
+    for t in "${quick_suites[@]}"; do
+      reach "$t" "$quick/$t" B2B_TEST_QUICK=1
     done
     # Lines of the tests in the first file list not in the second's union.
     missing() { comm -23 <(cat "${@:1:1}" | sort -u) <(cat "${@:2}" | sort -u); }
     failed=0
-    mapfile -t kept < <(names -L memcheck -E 'stop_without_ierr|^check_model_hostile$')
+    # The memcheck tests' lines as memcheck reaches them.
+    kept=()
+    while read -r t; do
+      if [ -f "$quick/$t" ]; then kept+=("$quick/$t"); else kept+=("$lines/$t"); fi
+    done < <(names -L memcheck -E 'stop_without_ierr|^check_model_hostile$')
+    for t in "${quick_suites[@]}"; do
+      m=$(missing "$lines/$t" "${kept[@]}")
+      if [ -n "$m" ]; then
+        echo "quickstart coverage: $t in its quick mode (B2B_TEST_QUICK=1) misses lines its full run reaches and no memcheck test reaches as memcheck runs it:"
+        echo "$m" | head -20
+        failed=1
+      else
+        echo "quickstart coverage: $t in its quick mode leaves $(missing "$lines/$t" "$quick/$t" | wc -l) of the $(wc -l <"$lines/$t") lines its full run reaches to the other memcheck tests (they reach them)"
+      fi
+    done
     for t in $(names -L 'check|fortran' -LE memcheck -E 'stop_without_ierr|^check_model_hostile$'); do
-      m=$(missing "$lines/$t" "${kept[@]/#/$lines/}")
+      m=$(missing "$lines/$t" "${kept[@]}")
       if [ -n "$m" ]; then
         echo "quickstart coverage: $t (not run by memcheck) reaches lines no memcheck test reaches:"
         echo "$m" | head -20
@@ -274,7 +334,7 @@ case "$mode" in
       failed=1
     fi
     ((failed == 0)) || exit 1
-    echo "quickstart coverage: the tests memcheck and sanitize leave out reach no library line that the tests they run do not"
+    echo "quickstart coverage: the memcheck tests as memcheck runs them (quick modes included) reach every line their full runs reach, and the tests memcheck and sanitize leave out reach no library line that the tests they run do not"
     ;;
   conly)
     # The C library as a packager without a Fortran compiler, Check or LAPACK
