@@ -173,9 +173,14 @@ void BoxTree::release() {
 
 // Chunk c holds the partners of boxes c * kQueryChunk onwards, each box's
 // in order: its pairs go to out after those of the chunks before it.
-void BoxTree::gather(int n_chunks, int threads, std::vector<std::pair<int, int>>& out) const {
+std::vector<size_t> BoxTree::chunk_offsets(int n_chunks) const {
   std::vector<size_t> offset(static_cast<size_t>(n_chunks) + 1, 0);
   for (int c = 0; c < n_chunks; ++c) offset[c + 1] = offset[c] + chunks_[c].partners.size();
+  return offset;
+}
+
+void BoxTree::gather(int n_chunks, int threads, std::vector<std::pair<int, int>>& out) const {
+  const std::vector<size_t> offset = chunk_offsets(n_chunks);
   out.resize(offset[n_chunks]);
 #ifdef B2B_HAVE_OPENMP
   const int nt = threads > 0 ? threads : omp_get_max_threads();
@@ -195,8 +200,7 @@ void BoxTree::gather(int n_chunks, int threads, std::vector<std::pair<int, int>>
 
 void BoxTree::gather(int n_chunks, int threads, PairRows& out) const {
   const size_t n = boxes_ ? boxes_->size() : 0;
-  std::vector<size_t> offset(static_cast<size_t>(n_chunks) + 1, 0);
-  for (int c = 0; c < n_chunks; ++c) offset[c + 1] = offset[c] + chunks_[c].partners.size();
+  const std::vector<size_t> offset = chunk_offsets(n_chunks);
   out.start.resize(n + 1);
   out.partner.resize(offset[n_chunks]);
 #ifdef B2B_HAVE_OPENMP

@@ -133,6 +133,9 @@ class BoxTree {
   // Every box's accepted partners into chunks_; the number of chunks.
   template <class Accept>
   int query_chunks(Accept& accept, int threads);
+  // Where each chunk's pairs start in the gathered pairs; the last entry
+  // is their number.
+  std::vector<size_t> chunk_offsets(int n_chunks) const;
   // The chunks' pairs, copied in order into out.
   void gather(int n_chunks, int threads, std::vector<std::pair<int, int>>& out) const;
   void gather(int n_chunks, int threads, PairRows& out) const;
