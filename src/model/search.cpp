@@ -9,9 +9,6 @@
 #include <algorithm>
 #include <cmath>
 
-#ifdef B2B_HAVE_OPENMP
-#include <omp.h>
-#endif
 
 namespace b2b {
 namespace model {
@@ -183,8 +180,7 @@ void BoxTree::gather(int n_chunks, int threads, std::vector<std::pair<int, int>>
   const std::vector<size_t> offset = chunk_offsets(n_chunks);
   out.resize(offset[n_chunks]);
 #ifdef B2B_HAVE_OPENMP
-  const int nt = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel for schedule(static) num_threads(nt) if (n_chunks > 1)
+#pragma omp parallel for schedule(static) num_threads(search_threads(threads)) if (n_chunks > 1)
 #else
   (void)threads;
 #endif
@@ -204,8 +200,7 @@ void BoxTree::gather(int n_chunks, int threads, PairRows& out) const {
   out.start.resize(n + 1);
   out.partner.resize(offset[n_chunks]);
 #ifdef B2B_HAVE_OPENMP
-  const int nt = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel for schedule(static) num_threads(nt) if (n_chunks > 1)
+#pragma omp parallel for schedule(static) num_threads(search_threads(threads)) if (n_chunks > 1)
 #else
   (void)threads;
 #endif

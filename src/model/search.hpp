@@ -130,6 +130,11 @@ class BoxTree {
   template <class Accept>
   void rtree_partners(int i, Accept& accept, std::vector<int>& out) const;
   static constexpr int kQueryChunk = 4096;  // boxes per chunk of the query
+#ifdef B2B_HAVE_OPENMP
+  // The threads of a search's parallel loops: as b2b's "threads" option,
+  // 0 meaning OpenMP's default (search_query.hpp).
+  static int search_threads(int threads);
+#endif
   // Every box's accepted partners into chunks_; the number of chunks.
   template <class Accept>
   int query_chunks(Accept& accept, int threads);

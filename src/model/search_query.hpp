@@ -14,6 +14,12 @@
 namespace b2b {
 namespace model {
 
+#ifdef B2B_HAVE_OPENMP
+inline int BoxTree::search_threads(int threads) {
+  return threads > 0 ? threads : omp_get_max_threads();
+}
+#endif
+
 template <class Accept>
 int BoxTree::query_chunks(Accept& accept, int threads) {
   const int n = boxes_ ? static_cast<int>(boxes_->size()) : 0;
@@ -25,8 +31,7 @@ int BoxTree::query_chunks(Accept& accept, int threads) {
   std::vector<std::exception_ptr> thrown(static_cast<size_t>(n_chunks));
   std::atomic<bool> stop{false};
 #ifdef B2B_HAVE_OPENMP
-  const int nt = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(nt) if (n_chunks > 1)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(search_threads(threads)) if (n_chunks > 1)
 #else
   (void)threads;
 #endif
