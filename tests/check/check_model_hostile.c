@@ -448,6 +448,15 @@ static int limit_memory(size_t extra_mb) {
   return setrlimit(RLIMIT_AS, &rl) == 0;
 }
 
+/* The address-space limit of limit_memory lifted again (to the hard limit),
+ * for a test that goes on after its out-of-memory part. */
+static int lift_memory_limit(void) {
+  struct rlimit rl;
+  getrlimit(RLIMIT_AS, &rl);
+  rl.rlim_cur = rl.rlim_max;
+  return setrlimit(RLIMIT_AS, &rl) == 0;
+}
+
 START_TEST(finalize_int_max_nodes) {
   /* finding 7: finalize(INT_MAX) with one 3-node beam allocated an
    * n_nodes-long table (8.4 GB, 15 s). Now: a few ints. */
@@ -603,10 +612,7 @@ START_TEST(out_of_memory_in_the_narrow_phase) {
   ck_assert_int_eq(b2b_model_contact_count(m, &n, NULL, 0), B2B_ERR_STATE);
   printf("check_model_hostile: narrow phase: %s\n", msg);
   /* the limit lifted, the same update goes through: all N^2 crossings */
-  struct rlimit rl;
-  getrlimit(RLIMIT_AS, &rl);
-  rl.rlim_cur = rl.rlim_max;
-  ck_assert(setrlimit(RLIMIT_AS, &rl) == 0);
+  ck_assert(lift_memory_limit());
   ok(b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg), msg);
   ck_assert_int_eq(count_contacts(m), N * N);
   free(x);
@@ -698,10 +704,7 @@ START_TEST(out_of_memory_after_an_update) {
   ck_assert_msg(memcmp(K, K + (size_t)KK * NC, (size_t)KK * NC * sizeof(double)) == 0,
                 "tangents changed");
   /* the limit lifted, the same update goes through: all N^2 crossings */
-  struct rlimit rl;
-  getrlimit(RLIMIT_AS, &rl);
-  rl.rlim_cur = rl.rlim_max;
-  ck_assert(setrlimit(RLIMIT_AS, &rl) == 0);
+  ck_assert(lift_memory_limit());
   ok(b2b_model_update(m, x, 3, 4 * N, 1, msg, sizeof msg), msg);
   ck_assert_int_eq(count_contacts(m), N * N);
   free(K);
