@@ -11,7 +11,14 @@ namespace pair {
 void symmetrize(double* K) {
   for (int c = 0; c < kNdof; ++c)
     for (int r = c + 1; r < kNdof; ++r) {
-      const double m = 0.5 * (K[r + kNdof * c] + K[c + kNdof * r]);
+      const double a = K[r + kNdof * c], b = K[c + kNdof * r];
+      // Two finite entries above DBL_MAX / 2 of one sign have an infinite
+      // sum, and the callers have checked K's finiteness before this: the
+      // halves then (both exact there, so the mean is the same rounding of
+      // (a + b) / 2). Elsewhere the sum first, which keeps the halves of
+      // subnormal entries from losing their last bit.
+      const double s = a + b;
+      const double m = s - s == 0.0 ? 0.5 * s : 0.5 * a + 0.5 * b;
       K[r + kNdof * c] = K[c + kNdof * r] = m;
     }
 }

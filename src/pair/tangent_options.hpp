@@ -26,7 +26,8 @@ static_assert(in_value_order(kTangentModes), "kTangentModes lists B2B_TANGENT_* 
 
 inline constexpr Enumeration kTangentModeEnumeration = enumeration_of(kTangentModes);
 
-// K = (K + K^T) / 2 (24 x 24, leading dimension 24).
+// K = (K + K^T) / 2 (24 x 24, leading dimension 24); finite entries give
+// finite ones (no overflow in the sum).
 void symmetrize(double* K);
 
 // K = -slope G G^T with G = [P_A^T n; -P_B^T n] (the main term).
