@@ -131,12 +131,24 @@ int tst_quick(void) {
  * yes unless the running suite's runner does not fork. */
 static int tst_marks = 1;
 
+/* The location recorded last: an assertion in a loop passes at the same
+ * place thousands of times, and Check's report of a crash names only the
+ * last location recorded, which recording it again does not change. (In
+ * fork mode each test runs in a child process with its own copy of these,
+ * starting from none.) */
+static const char *tst_marked_file;
+static int tst_marked_line = -1;
+
 void tst_mark_point(const char *file, int line) {
-  if (tst_marks) _mark_point(file, line);
+  if (!tst_marks || (line == tst_marked_line && file == tst_marked_file)) return;
+  tst_marked_file = file;
+  tst_marked_line = line;
+  _mark_point(file, line);
 }
 
-int tst_run_suite(Suite *suite) {
+static int run_suite(Suite *suite, int forked) {
   SRunner *runner = srunner_create(suite);
+  if (forked) srunner_set_fork_status(runner, CK_FORK);
   if (tst_quick())
     printf("B2B_TEST_QUICK: a suite with a quick mode runs fewer configurations, the same checks\n");
   tst_marks = srunner_fork_status(runner) != CK_NOFORK;
@@ -145,3 +157,7 @@ int tst_run_suite(Suite *suite) {
   srunner_free(runner);
   return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
+
+int tst_run_suite(Suite *suite) { return run_suite(suite, 0); }
+
+int tst_run_suite_forked(Suite *suite) { return run_suite(suite, 1); }
