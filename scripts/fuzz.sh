@@ -34,7 +34,7 @@ esac
 # libFuzzer and the sanitizer runtimes come with clang's runtime package;
 # llvm-14 has llvm-profdata-14 and llvm-cov-14. gfortran and LAPACK because
 # the project's CMake configuration needs them (the targets do not).
-packages=(cmake make g++ gfortran pkg-config liblapack-dev libboost-dev clang libclang-rt-14-dev)
+packages=(cmake ninja-build make g++ gfortran pkg-config liblapack-dev libboost-dev clang libclang-rt-14-dev)
 [ "$mode" = long ] && packages+=(llvm-14)
 scripts/install_packages.sh fuzz "${packages[@]}"
 
@@ -54,7 +54,7 @@ jobs=$(nproc)
 # OpenMP off: the model's threads would only make runs less reproducible (a
 # fuzz model stays far below the size at which it starts threads).
 configure=(-DB2B_FUZZ=ON -DBUILD_TESTING=OFF -DB2B_BUILD_EXAMPLES=OFF -DB2B_ENABLE_OPENMP=OFF)
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo "${configure[@]}"
+CC=clang CXX=clang++ scripts/configure_build.sh build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo "${configure[@]}"
 cmake --build build-fuzz -j "$jobs" --target fuzz_targets
 
 # Any sanitizer finding aborts (the build has -fno-sanitize-recover), and so
@@ -121,7 +121,7 @@ if [ "$mode" = long ] && ((${#failed[@]} == 0)); then
   bin=/usr/lib/llvm-14/bin
   profdata=$(command -v llvm-profdata-14 || command -v "$bin/llvm-profdata" || command -v llvm-profdata)
   cov=$(command -v llvm-cov-14 || command -v "$bin/llvm-cov" || command -v llvm-cov)
-  CC=clang CXX=clang++ cmake -S . -B build-fuzz-cov -DCMAKE_BUILD_TYPE=Debug "${configure[@]}" \
+  CC=clang CXX=clang++ scripts/configure_build.sh build-fuzz-cov -DCMAKE_BUILD_TYPE=Debug "${configure[@]}" \
     -DB2B_FUZZ_COVERAGE=ON
   cmake --build build-fuzz-cov -j "$jobs" --target fuzz_targets
   prof=build-fuzz-cov/profiles

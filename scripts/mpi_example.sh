@@ -25,16 +25,16 @@ case "${1:-}" in
     ;;
 esac
 
-packages=(cmake make g++ pkg-config liblapack-dev petsc-dev openmpi-bin libopenmpi-dev)
+packages=(cmake ninja-build make g++ pkg-config liblapack-dev petsc-dev openmpi-bin libopenmpi-dev)
 scripts/install_packages.sh mpi_example "${packages[@]}"
 
 dir=${MPI_BUILD_DIR:-build-mpi}
 if [ -f "$dir/CMakeCache.txt" ] && [ "$dir" != build-mpi ]; then
   # An existing build: its own options, the example switched on.
-  cmake -S . -B "$dir" -DB2B_ENABLE_MPI_EXAMPLE=ON
+  scripts/configure_build.sh "$dir" -DB2B_ENABLE_MPI_EXAMPLE=ON
 else
   # The example needs neither Fortran nor the library's own test suites.
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_MPI_EXAMPLE=ON \
+  scripts/configure_build.sh "$dir" -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_MPI_EXAMPLE=ON \
     -DB2B_ENABLE_FORTRAN=OFF
 fi
 cmake --build "$dir" -j "$(nproc)" --target mpi_host mpi_beam_element_fd mpi_compare_results

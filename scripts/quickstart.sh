@@ -50,7 +50,7 @@ case "$mode" in
     ;;
 esac
 
-packages=(cmake make g++ gfortran pkg-config check liblapack-dev libboost-dev)
+packages=(cmake ninja-build make g++ gfortran pkg-config check liblapack-dev libboost-dev)
 case "$mode" in
   # abi and memcheck share one configure, which looks for both tools.
   abi | memcheck) packages+=(abigail-tools valgrind) ;;
@@ -66,7 +66,7 @@ jobs=$(nproc)
 # (B2B_ABI_CHECK) and valgrind's options in one configure, no examples (the
 # demo host and the examples run in the test and sanitize steps).
 configure_debinfo() {
-  cmake -S . -B build-debinfo -DCMAKE_BUILD_TYPE=RelWithDebInfo -DB2B_ABI_CHECK=ON \
+  scripts/configure_build.sh build-debinfo -DCMAKE_BUILD_TYPE=RelWithDebInfo -DB2B_ABI_CHECK=ON \
     -DB2B_BUILD_EXAMPLES=OFF \
     "-DMEMORYCHECK_COMMAND=$(command -v valgrind)" \
     "-DMEMORYCHECK_SUPPRESSIONS_FILE=$PWD/tests/memcheck.supp" \
@@ -74,7 +74,7 @@ configure_debinfo() {
 }
 case "$mode" in
   demo)
-    cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+    scripts/configure_build.sh build -DCMAKE_BUILD_TYPE=Release
     cmake --build build -j "$jobs" --target b2b_demo
     # Each scene's full output goes to build/demo/<scene>.log; its check
     # summary and verdict are printed here.
@@ -99,12 +99,12 @@ case "$mode" in
     fi
     ;;
   study)
-    cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+    scripts/configure_build.sh build -DCMAKE_BUILD_TYPE=Release
     cmake --build build -j "$jobs" --target curve_study
     ./build/examples/curve_study
     ;;
   test)
-    cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+    scripts/configure_build.sh build -DCMAKE_BUILD_TYPE=Release
     cmake --build build -j "$jobs"
     # Label large (the MPI example's 10^5-segment network, minutes per run,
     # registered when MPI and PETSc are found): on demand only, as
@@ -130,7 +130,7 @@ case "$mode" in
     # at -O2 (271 + 201 s against 311 + 190 s, one run each). -g1: line
     # tables, all a finding's stack trace needs (file, line, function). The
     # MPI example is not built: its tests do not run here (below).
-    cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DB2B_SANITIZE=ON \
+    scripts/configure_build.sh build-sanitize -DCMAKE_BUILD_TYPE=Debug -DB2B_SANITIZE=ON \
       "-DCMAKE_C_FLAGS_DEBUG=-O1 -g1" "-DCMAKE_CXX_FLAGS_DEBUG=-O2 -g1" \
       "-DCMAKE_Fortran_FLAGS_DEBUG=-O1 -g1" -DB2B_ENABLE_MPI_EXAMPLE=OFF
     cmake --build build-sanitize -j "$jobs"
@@ -150,7 +150,13 @@ case "$mode" in
     #    and the same program in the three other demo_contact_tangent_* tests,
     #    and it reaches no library line that they and the suites do not
     #    (scripts/quickstart.sh coverage checks it).
-    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+    # CK_FORK=no: each Check suite runs its tests in its own process, not
+    # one child process a test (check_model_hostile, whose tests need one
+    # each, forks all the same: tst_run_suite_forked). A process under ASan
+    # is slow to fork: check_curve_bad_input took 26.5 s in fork mode and
+    # 0.15 s without; and a crash is reported by ASan with its stack, which
+    # is more than Check's report from a child process says.
+    CK_FORK=no ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE 'large|mpi' \
       -E '^(demo_trade_table_short|demo_contact_tangent_many_contacts)$'
@@ -170,7 +176,7 @@ case "$mode" in
     # 66), and the race canary must be reported. setarch -R: without address
     # randomisation, since some TSan runtimes cannot map their shadow memory
     # under the larger mmap randomisation of recent kernels.
-    CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    CC=clang CXX=clang++ scripts/configure_build.sh build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DB2B_TSAN=ON -DB2B_BUILD_EXAMPLES=OFF
     cmake --build build-tsan -j "$jobs" --target check_pair_threads \
       check_model_threads tsan_omp_race_canary
@@ -183,10 +189,12 @@ case "$mode" in
     # packaging tests run in the test and sanitize steps). Fortran off: the
     # Fortran is gfortran's in every step, its module and host are built
     # and run in the others.
-    CC=clang CXX=clang++ cmake -S . -B build-clang -DCMAKE_BUILD_TYPE=Release -DB2B_WERROR=ON \
+    CC=clang CXX=clang++ scripts/configure_build.sh build-clang -DCMAKE_BUILD_TYPE=Release -DB2B_WERROR=ON \
       -DB2B_ENABLE_FORTRAN=OFF
     cmake --build build-clang -j "$jobs"
-    ctest --test-dir build-clang --output-on-failure -j "$jobs" -L check
+    # CK_FORK=no as in sanitize: the suites' verdicts are the same, without
+    # a child process a test.
+    CK_FORK=no ctest --test-dir build-clang --output-on-failure -j "$jobs" -L check
     ;;
   memcheck)
     # The library's suites under valgrind; any error or definitely/possibly
@@ -261,7 +269,7 @@ case "$mode" in
     # Exits 1, naming the lines (the first 20 of each test), if one does not
     # hold.
     dir=build-coverage
-    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g --coverage" \
+    scripts/configure_build.sh "$dir" -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g --coverage" \
       -DCMAKE_SHARED_LINKER_FLAGS=--coverage -DCMAKE_EXE_LINKER_FLAGS=--coverage
     cmake --build "$dir" -j "$jobs"
     names() { ctest --test-dir "$dir" -N "$@" | sed -n 's/^ *Test *#[0-9]*: //p'; }
@@ -342,7 +350,7 @@ case "$mode" in
     # Check) are off, and LAPACK is disabled, so the examples that need it
     # are left out. The cache shows that CMake looked for none of the three.
     dir=build-pkg-conly
-    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_FORTRAN=OFF \
+    scripts/configure_build.sh "$dir" -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_FORTRAN=OFF \
       -DBUILD_TESTING=OFF -DCMAKE_DISABLE_FIND_PACKAGE_LAPACK=ON
     if grep -E '^(CMAKE_Fortran_COMPILER|pkgcfg_lib_CHECK_|LAPACK_|BLAS_)' "$dir/CMakeCache.txt"; then
       echo "quickstart conly: CMake looked for Fortran, Check or LAPACK (cache entries above)" >&2
@@ -367,7 +375,7 @@ case "$mode" in
     # Fortran; consumer_fortran_i8) and the README's snippets build and run
     # against it (readme_snippets). The suites' code is the same as in the
     # test step's shared build; only the libraries are built here.
-    cmake -S . -B build-pkg-static -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF
+    scripts/configure_build.sh build-pkg-static -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF
     cmake --build build-pkg-static -j "$jobs" --target b2b b2b_fortran
     # cited_paths (label docs) reads the sources only: the test step ran it.
     ctest --test-dir build-pkg-static --output-on-failure -j "$jobs" -L 'consumer|docs' \
@@ -404,7 +412,7 @@ case "$mode" in
     # The conly step's C-only build directory, configured (again, now that
     # Doxygen is there) with the same options.
     dir=build-pkg-conly
-    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_FORTRAN=OFF \
+    scripts/configure_build.sh "$dir" -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_FORTRAN=OFF \
       -DBUILD_TESTING=OFF -DCMAKE_DISABLE_FIND_PACKAGE_LAPACK=ON
     cmake --build "$dir" --target doc
     echo "quickstart doc: $PWD/$dir/doc/api/html/index.html"
