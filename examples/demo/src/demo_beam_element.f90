@@ -95,7 +95,7 @@ contains
            + (2.0_dp * eiz / l0) * (tha(3) * tha(3) + tha(3) * thb(3) + thb(3) * thb(3))
 
     f = energy%g
-    k = energy%h
+    k = hd_hessian(energy)
     if (corr) then
       k(4:6, 4:6) = k(4:6, 4:6) - 0.5_dp * skew3(f(4:6))
       k(10:12, 10:12) = k(10:12, 10:12) - 0.5_dp * skew3(f(10:12))
