@@ -110,17 +110,29 @@ void check_rows(const b2b::model::PairRows& rows, const Pairs& ref, size_t n, co
   ck_assert_msg(rows.start.size() == n + 1 && rows.size() == ref.size(),
                 "%s, %s, %d thread(s), rows: %zu starts for %zu boxes, %zu pairs, brute force %zu",
                 what, backend, threads, rows.start.size(), n, rows.size(), ref.size());
-  for (size_t k = 0; k < ref.size(); ++k) {
+  // Each pair is checked in plain C++ and only the first that fails reaches
+  // Check, whose record of every passed assertion (a write(2) each) made
+  // this suite take 81 s under valgrind.
+  auto stored = [&](size_t k) {
     const int a = ref[k].first, b = ref[k].second;
-    ck_assert_msg(rows.row_of(k) == a && rows.partner[k] == b &&
-                      rows.find(a, b) == static_cast<int64_t>(k),
+    return rows.row_of(k) == a && rows.partner[k] == b &&
+           rows.find(a, b) == static_cast<int64_t>(k);
+  };
+  // No box pairs with itself, and the pair reversed is not stored.
+  auto not_reversed = [&](size_t k) {
+    const int a = ref[k].first, b = ref[k].second;
+    return rows.find(a, a) < 0 && rows.find(b, a) < 0;
+  };
+  size_t k = 0;
+  while (k < ref.size() && stored(k) && not_reversed(k)) ++k;
+  if (k < ref.size()) {
+    const int a = ref[k].first, b = ref[k].second;
+    ck_assert_msg(stored(k),
                   "%s, %s, %d thread(s), rows: pair %zu is (%d, %d) found at %lld, brute force "
                   "(%d, %d)",
                   what, backend, threads, k, rows.row_of(k), rows.partner[k],
                   static_cast<long long>(rows.find(a, b)), a, b);
-    // No box pairs with itself, and the pair reversed is not stored.
-    ck_assert_msg(rows.find(a, a) < 0 && rows.find(b, a) < 0, "%s, %s: (%d, %d) found reversed",
-                  what, backend, a, b);
+    ck_assert_msg(not_reversed(k), "%s, %s: (%d, %d) found reversed", what, backend, a, b);
   }
   const int m = static_cast<int>(n);
   ck_assert_msg(rows.find(-1, 0) < 0 && rows.find(m, m + 1) < 0 && rows.find(m - 1, m) < 0,
