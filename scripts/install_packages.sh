@@ -23,5 +23,11 @@ mapfile -t need < <(missing "${need[@]}")
 echo "$who: installing missing Debian packages: ${need[*]}"
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo=sudo
+# B2B_APT_UNSAFE_IO=1 (set by .ci/run, whose machine is discarded after the
+# run): dpkg unpacks without syncing each file to disk, so a crash during
+# the install could leave broken packages behind; not for a machine one keeps.
+unsafe=()
+[ "${B2B_APT_UNSAFE_IO:-0}" = 1 ] && unsafe=(-o Dpkg::Options::=--force-unsafe-io)
 $sudo apt-get update -q
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${need[@]}"
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${unsafe[@]}" \
+  "${need[@]}"

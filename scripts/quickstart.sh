@@ -12,11 +12,11 @@
 # builds only the targets it runs, and steps with the same configuration
 # share a build directory, the second waiting for the first):
 #   abi        the ABI gate: libb2b and libb2b_fortran against their abidw
-#              baselines in tests/abi/ (RelWithDebInfo build in
-#              build-debinfo/, shared with memcheck; abigail-tools)
+#              baselines in tests/abi/ (Debug build in build-abi/;
+#              abigail-tools)
 #   memcheck   the library's suites (Check and Fortran) under valgrind
-#              memcheck, the slowest in their quick mode (build-debinfo/;
-#              valgrind)
+#              memcheck, the slowest in their quick mode (the test step's
+#              Release build in build/; valgrind)
 #   tsan       the thread tests check_pair_threads and check_model_threads
 #              built by clang with ThreadSanitizer (build-tsan/)
 #   clang      all C and C++ (the library with -Werror, its tests, the
@@ -52,8 +52,8 @@ esac
 
 packages=(cmake ninja-build make g++ gfortran pkg-config check liblapack-dev libboost-dev)
 case "$mode" in
-  # abi and memcheck share one configure, which looks for both tools.
-  abi | memcheck) packages+=(abigail-tools valgrind) ;;
+  abi) packages+=(abigail-tools) ;;
+  memcheck) packages+=(valgrind) ;;
   tsan) packages+=(clang libomp-14-dev libclang-rt-14-dev) ;;
   clang) packages+=(clang) ;;
   doc) packages+=(doxygen) ;;
@@ -62,16 +62,6 @@ scripts/install_packages.sh quickstart "${packages[@]}"
 
 jobs=$(nproc)
 
-# The RelWithDebInfo build of abi and memcheck (build-debinfo/): the ABI gate
-# (B2B_ABI_CHECK) and valgrind's options in one configure, no examples (the
-# demo host and the examples run in the test and sanitize steps).
-configure_debinfo() {
-  scripts/configure_build.sh build-debinfo -DCMAKE_BUILD_TYPE=RelWithDebInfo -DB2B_ABI_CHECK=ON \
-    -DB2B_BUILD_EXAMPLES=OFF \
-    "-DMEMORYCHECK_COMMAND=$(command -v valgrind)" \
-    "-DMEMORYCHECK_SUPPRESSIONS_FILE=$PWD/tests/memcheck.supp" \
-    "-DMEMORYCHECK_COMMAND_OPTIONS=--error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,possible --show-leak-kinds=definite,possible --num-callers=30"
-}
 case "$mode" in
   demo)
     scripts/configure_build.sh build -DCMAKE_BUILD_TYPE=Release
@@ -163,11 +153,15 @@ case "$mode" in
     ;;
   abi)
     # Debug info is what abidiff compares types with; the baselines and how
-    # to update them: tests/abi/README.md. Only the two libraries are built
-    # here; memcheck builds the suites in the same directory.
-    configure_debinfo
-    cmake --build build-debinfo -j "$jobs" --target b2b b2b_fortran
-    ctest --test-dir build-debinfo --output-on-failure -j "$jobs" -L abi
+    # to update them: tests/abi/README.md. A Debug build (-O0 -g): the
+    # exported functions and types do not depend on the optimisation, and
+    # the two libraries took 44 s of CPU to build at -O0 against 58 s at
+    # RelWithDebInfo's -O2 (the gate passes against the same baselines).
+    # Only the two libraries are built, no examples.
+    scripts/configure_build.sh build-abi -DCMAKE_BUILD_TYPE=Debug -DB2B_ABI_CHECK=ON \
+      -DB2B_BUILD_EXAMPLES=OFF
+    cmake --build build-abi -j "$jobs" --target b2b b2b_fortran
+    ctest --test-dir build-abi --output-on-failure -j "$jobs" -L abi
     ;;
   tsan)
     # clang with LLVM's OpenMP runtime and its Archer tool: TSan then sees
@@ -200,10 +194,15 @@ case "$mode" in
     # The library's suites under valgrind; any error or definitely/possibly
     # lost block makes one exit 1, i.e. fail (tests/memcheck.supp: what is
     # suppressed, and why). CK_FORK=no: Check runs the tests in the process
-    # valgrind watches. The abi step's build directory (RelWithDebInfo, no
-    # examples; the libraries are built already when abi ran first, as in CI).
-    configure_debinfo
-    cmake --build build-debinfo -j "$jobs"
+    # valgrind watches. In the test step's Release build (build/, configured
+    # and built here when the step runs alone; in CI it has run, and the
+    # build is up to date): the programs valgrind runs are the ones the test
+    # step ran, and no third build of the suites is made for it (a
+    # RelWithDebInfo one took about 45 s of CPU). Without debug information
+    # a report names functions, not lines; `-DCMAKE_BUILD_TYPE=RelWithDebInfo`
+    # in a build directory of one's own gives the lines.
+    scripts/configure_build.sh build -DCMAKE_BUILD_TYPE=Release
+    cmake --build build -j "$jobs"
     # Only the library's suites (label memcheck: of the labels check and
     # fortran): the demo host's scenes and the examples are the library under
     # a host, which ASan and UBSan cover in the sanitize step (under valgrind
@@ -219,11 +218,10 @@ case "$mode" in
     #    design, so the message it was building is reported as lost, and
     #    they pass by a non-zero exit (WILL_FAIL) anyway;
     #  - check_model_hostile: it limits the process's address space to test
-    #    out-of-memory paths, and under CK_FORK=no (one process for all its
-    #    tests) the limits outlive their tests while valgrind's own
-    #    allocator runs under them; its 10^5-group and 10^5-contact scenes
-    #    take minutes here. It runs under ASan+UBSan (the limits skipped
-    #    there) and in every other mode.
+    #    out-of-memory paths, while valgrind's own allocator runs under the
+    #    limits; its 10^5-group and 10^5-contact scenes take minutes here.
+    #    It runs under ASan+UBSan (the limits skipped there) and in every
+    #    other mode.
     # B2B_TEST_QUICK=1: the suites labelled quick (tests/CMakeLists.txt,
     # B2B_QUICK_SUITES) run the same checks on fewer configurations, which
     # every other step runs in full: check_model_threads' 500 fibres in a
@@ -243,8 +241,12 @@ case "$mode" in
     # each on the same library (doc/verification.md, CI): 507 s of CPU and
     # 345 s of wall time with the tests before the quick modes, 113.5 s and
     # 57.6 s with them.
-    CK_FORK=no B2B_TEST_QUICK=1 ctest --test-dir build-debinfo --output-on-failure -j "$jobs" \
-      -T memcheck -L memcheck
+    # valgrind's options through ctest's --overwrite, not build/'s cache.
+    CK_FORK=no B2B_TEST_QUICK=1 ctest --test-dir build --output-on-failure -j "$jobs" \
+      -T memcheck -L memcheck \
+      --overwrite "MemoryCheckCommand=$(command -v valgrind)" \
+      --overwrite "MemoryCheckSuppressionFile=$PWD/tests/memcheck.supp" \
+      --overwrite "MemoryCheckCommandOptions=--error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,possible --show-leak-kinds=definite,possible --num-callers=30"
     ;;
   coverage)
     # Not a CI step: it checks what memcheck and sanitize leave out. Each
