@@ -4,7 +4,8 @@
 # tests/fuzz/corpus/<target>/ (which also hold the reproducers of every
 # defect found: each is run first, so a regression fails at once):
 #   short            each target for 15 s (FUZZ_SECONDS overrides), as many
-#                    at a time as there are cores (FUZZ_PARALLEL overrides):
+#                    at a time as there are cores, or B2B_JOBS
+#                    (FUZZ_PARALLEL overrides both):
 #                    the CI step; exits 1 if any target crashes or breaks the
 #                    contract (the input is kept in build-fuzz/artifacts/)
 #   long [seconds]   the long campaign, each target for `seconds` (default
@@ -50,7 +51,7 @@ for t in "${all_targets[@]}"; do
   }
 done
 read -r -a targets <<<"${FUZZ_TARGETS:-${all_targets[*]}}"
-jobs=$(nproc)
+jobs=${B2B_JOBS:-$(nproc)}   # as scripts/quickstart.sh: one per core unless B2B_JOBS says
 # OpenMP off: the model's threads would only make runs less reproducible (a
 # fuzz model stays far below the size at which it starts threads).
 configure=(-DB2B_FUZZ=ON -DBUILD_TESTING=OFF -DB2B_BUILD_EXAMPLES=OFF -DB2B_ENABLE_OPENMP=OFF)
@@ -88,7 +89,7 @@ run_target() {
   fi
   echo $((SECONDS - start)) >"$logs/$t.time"
 }
-# Short runs (CI) go FUZZ_PARALLEL at a time, by default one per core: a
+# Short runs (CI) go FUZZ_PARALLEL at a time, by default one per job: a
 # target is single-threaded, and max_total_time is wall time. The long
 # campaign runs them one after the other unless FUZZ_PARALLEL says otherwise.
 if [ "$mode" = short ]; then parallel=${FUZZ_PARALLEL:-$jobs}; else parallel=${FUZZ_PARALLEL:-1}; fi

@@ -37,6 +37,6 @@ else
   scripts/configure_build.sh "$dir" -DCMAKE_BUILD_TYPE=Release -DB2B_ENABLE_MPI_EXAMPLE=ON \
     -DB2B_ENABLE_FORTRAN=OFF
 fi
-cmake --build "$dir" -j "$(nproc)" --target mpi_host mpi_beam_element_fd mpi_compare_results
+cmake --build "$dir" -j "${B2B_JOBS:-$(nproc)}" --target mpi_host mpi_beam_element_fd mpi_compare_results
 # --no-tests=error: a build that did not register the example fails here.
 ctest --test-dir "$dir" -L mpi "${exclude[@]}" --output-on-failure --no-tests=error

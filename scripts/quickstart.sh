@@ -9,8 +9,8 @@
 #   sanitize   the test suite built with AddressSanitizer and
 #              UndefinedBehaviorSanitizer, optimised (build-sanitize/)
 # and the further CI checks (.ci/run runs them, two at a time; each step
-# builds only the targets it runs, and steps with the same configuration
-# share a build directory, the second waiting for the first):
+# builds only the targets it runs, and a step that uses another's build
+# directory waits for it):
 #   abi        the ABI gate: libb2b and libb2b_fortran against their abidw
 #              baselines in tests/abi/ (Debug build in build-abi/;
 #              abigail-tools)
@@ -60,7 +60,10 @@ case "$mode" in
 esac
 scripts/install_packages.sh quickstart "${packages[@]}"
 
-jobs=$(nproc)
+# Parallel jobs of the build and of ctest: one per core, unless B2B_JOBS
+# says otherwise (.ci/run, which runs two steps at a time, gives each its
+# share of the cores).
+jobs=${B2B_JOBS:-$(nproc)}
 
 case "$mode" in
   demo)
@@ -140,8 +143,8 @@ case "$mode" in
     #    and the same program in the three other demo_contact_tangent_* tests,
     #    and it reaches no library line that they and the suites do not
     #    (scripts/quickstart.sh coverage checks it).
-    # CK_FORK=no: each Check suite runs its tests in its own process, not
-    # one child process a test (check_model_hostile, whose tests need one
+    # CK_FORK=no: a Check suite runs all its tests in its own process, not
+    # each in a child process (check_model_hostile, whose tests need one
     # each, forks all the same: tst_run_suite_forked). A process under ASan
     # is slow to fork: check_curve_bad_input took 26.5 s in fork mode and
     # 0.15 s without; and a crash is reported by ASan with its stack, which
@@ -186,8 +189,8 @@ case "$mode" in
     CC=clang CXX=clang++ scripts/configure_build.sh build-clang -DCMAKE_BUILD_TYPE=Release -DB2B_WERROR=ON \
       -DB2B_ENABLE_FORTRAN=OFF
     cmake --build build-clang -j "$jobs"
-    # CK_FORK=no as in sanitize: the suites' verdicts are the same, without
-    # a child process a test.
+    # CK_FORK=no as in sanitize: the same verdicts, without a child process
+    # for each test (every suite passes so; check_model_hostile forks anyway).
     CK_FORK=no ctest --test-dir build-clang --output-on-failure -j "$jobs" -L check
     ;;
   memcheck)
@@ -400,8 +403,9 @@ case "$mode" in
     # The libFuzzer targets of tests/fuzz for a bounded time each, on their
     # seed corpora and the reproducers of every defect found (clang, ASan +
     # UBSan; scripts/fuzz.sh installs what it needs): 15 s per target
-    # (FUZZ_SECONDS), one target per core (FUZZ_PARALLEL), so 8 targets take
-    # four rounds on 2 cores: two CPU minutes of mutation, CI's share of a
+    # (FUZZ_SECONDS), one target per job (B2B_JOBS, by default a core;
+    # FUZZ_PARALLEL), so 8 targets take four rounds on 2 cores, eight in CI
+    # (one job a step): two CPU minutes of mutation, CI's share of a
     # 12-minute budget (issue 20). The seeds and reproducers are all
     # replayed first in any case; the long campaign that grows the corpus
     # and measures coverage is scripts/fuzz.sh long (15 minutes a target).
