@@ -21,7 +21,7 @@
 #include "model/search.hpp"
 
 // Last: Check's macros (fail, ...) would rename members of the C++ library.
-#include <check.h>
+#include "test_support.h"
 
 namespace {
 
@@ -294,9 +294,5 @@ int main(void) {
   tcase_add_test(tc, large_boxes_and_filter);
   tcase_add_test(tc, rebuild_smaller);
   suite_add_tcase(s, tc);
-  SRunner* sr = srunner_create(s);
-  srunner_run_all(sr, CK_NORMAL);
-  const int failed = srunner_ntests_failed(sr);
-  srunner_free(sr);
-  return failed == 0 ? 0 : 1;
+  return tst_run_suite(s);
 }

@@ -6,8 +6,6 @@
 // the entries and falls back to the exact check only when that sum
 // overflows although every entry is finite (entries near the double
 // range that do not cancel): a path no contact scene reaches, tested here.
-#include <check.h>
-
 #include <cfloat>
 #include <cmath>
 #include <cstdlib>
@@ -15,6 +13,9 @@
 #include <vector>
 
 #include "../../src/common/finite.hpp"
+
+// Last: Check's macros (fail, ...) would rename members of the C++ library.
+#include "test_support.h"
 
 namespace {
 
@@ -125,9 +126,5 @@ int main() {
   tcase_add_test(tc, opposite_infinities);
   tcase_add_test(tc, odd_lengths);
   suite_add_tcase(s, tc);
-  SRunner* r = srunner_create(s);
-  srunner_run_all(r, CK_NORMAL);
-  const int failed = srunner_ntests_failed(r);
-  srunner_free(r);
-  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tst_run_suite(s);
 }

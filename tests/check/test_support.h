@@ -8,6 +8,11 @@
 
 #include <b2b/b2b.h>
 
+/* C linkage for the suites written in C++ (check_box_tree, check_finite). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Check's ck_assert_msg (and every ck_assert_* built on it) with its record
  * of a passed assertion made conditional: Check writes each passed
  * assertion's location to its message file (one write(2) each) so that a
@@ -139,5 +144,9 @@ int tst_run_suite(Suite *suite);
  * for a suite whose tests change their process for the tests after them
  * (check_model_hostile's address-space limits). */
 int tst_run_suite_forked(Suite *suite);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
