@@ -54,8 +54,9 @@ int eval_pair(const Reporter& r, const b2b_params* params, const int* segments, 
 
     pr::PairResult out;
     double K[pr::kNdof * pr::kNdof];
-    const pr::PairFailure f =
-        pr::evaluate_pair(params->p, seg[0], seg[1], hist_old, out, tangent ? K : nullptr, held);
+    pr::TangentColumns used;  // K as the element left it: expand_tangent writes it out
+    const pr::PairFailure f = pr::evaluate_pair(params->p, seg[0], seg[1], hist_old, out,
+                                                tangent ? K : nullptr, held, &used);
     if (f.status != B2B_OK) return report_segment_failure(r, kPairBeam[f.beam], f.segment);
     if (out.overflow && params->p.friction > 0.0)
       return r.fail(B2B_ERR_RANGE,
@@ -73,10 +74,7 @@ int eval_pair(const Reporter& r, const b2b_params* params, const int* segments, 
     *contact_status = out.contact_status;
     std::memcpy(info, out.info, sizeof out.info);
     std::memcpy(residual, out.residual, sizeof out.residual);
-    if (tangent)
-      for (int c = 0; c < pr::kNdof; ++c)
-        std::memcpy(tangent + static_cast<size_t>(ldk) * c, K + pr::kNdof * c,
-                    pr::kNdof * sizeof(double));
+    if (tangent) pr::expand_tangent(K, used, tangent, ldk);
     return B2B_OK;
   });
 }

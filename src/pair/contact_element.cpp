@@ -38,17 +38,19 @@ PairFailure build_pair(const SegmentInput& A, const SegmentInput& B, curve::Segm
 }
 
 PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const SegmentInput& B,
-                          const double* hist_old, PairResult& out, double* K, Ends ends) {
+                          const double* hist_old, PairResult& out, double* K, Ends ends,
+                          TangentColumns* compact) {
   curve::Segment built[2];
   SegmentRef refs[2];
   const PairFailure fail = build_pair(A, B, built, refs);
-  if (!fail.status) evaluate_built(params, refs[0], refs[1], hist_old, out, K, ends);
+  if (!fail.status)
+    evaluate_built(params, refs[0], refs[1], hist_old, out, K, ends, nullptr, compact);
   return fail;
 }
 
 void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef& B,
                     const double* hist_old, PairResult& out, double* K, Ends ends,
-                    Kinematics* kin) {
+                    Kinematics* kin, TangentColumns* compact) {
   out = PairResult();
   const int hist_len = history_length(params);
   std::memcpy(out.history, hist_old, hist_len * sizeof(double));
@@ -66,7 +68,10 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   // overflow too, with a huge regularization gap.)
   auto no_force = [&](int status) {
     out.contact_status = status;
-    if (K) std::memset(K, 0, kNdof * kNdof * sizeof(double));
+    if (K && compact)
+      compact->m = 0;
+    else if (K)
+      std::memset(K, 0, kNdof * kNdof * sizeof(double));
     out.overflow = !all_finite(out.info, kInfoLength) || !all_finite(out.history, hist_len);
   };
   if (kin) *kin = k;
@@ -129,6 +134,7 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
   if (!K) return;
 
   // Stage 3: the tangent, as the "tangent" option asks.
+  if (compact) compact->m = kNdof;  // (assemble_tangent may make it compact)
   if (params.tangent == B2B_TANGENT_MAIN) {
     main_term(law.slope, PA, PB, k.n, K);
     info[B2B_INFO_SYMMETRIC] = 1.0;
@@ -141,10 +147,11 @@ void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef&
     out.overflow = out.overflow || !all_finite(K, kNdof * kNdof);
     return;
   }
-  const TangentResult t = assemble_tangent(params, A, B, k, law, fc, fr, PA, PAd, PB, PBd, K);
+  const TangentResult t =
+      assemble_tangent(params, A, B, k, law, fc, fr, PA, PAd, PB, PBd, K, compact);
   if (!t.symmetric) info[B2B_INFO_SYMMETRIC] = 0.0;
   if (params.tangent == B2B_TANGENT_SYMMETRIC && !t.symmetric) {
-    symmetrize(K);
+    symmetrize(K, compact ? compact->m : kNdof);
     info[B2B_INFO_SYMMETRIC] = 1.0;
   }
   out.overflow = out.overflow || !t.finite;

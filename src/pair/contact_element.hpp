@@ -11,6 +11,7 @@
 #include "history.hpp"
 #include "linearization.hpp"
 #include "params.hpp"
+#include "tangent_assembly.hpp"
 
 namespace b2b {
 namespace pair {
@@ -52,7 +53,7 @@ PairFailure build_pair(const SegmentInput& A, const SegmentInput& B, curve::Segm
 // ends: an end contact (a node of A or B held, Ends); default the free pair.
 PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const SegmentInput& B,
                           const double* hist_old, PairResult& out, double* K,
-                          Ends ends = Ends());
+                          Ends ends = Ends(), TangentColumns* compact = nullptr);
 
 // The element on segments built with derivatives (a contact model builds each
 // segment once per update and evaluates every candidate pair on them).
@@ -60,9 +61,11 @@ PairFailure evaluate_pair(const Params& params, const SegmentInput& A, const Seg
 // column-major, leading dimension 24, or null for no tangent; zero when the
 // pair is not active. kin: if not null, receives the kinematics (valid where
 // the pair is active; the line element's blending differentiates them).
+// compact: if not null (and K not null), K may be left compact, as compact
+// says (tangent_assembly.hpp; expand_tangent() writes all of it).
 void evaluate_built(const Params& params, const SegmentRef& A, const SegmentRef& B,
                     const double* hist_old, PairResult& out, double* K, Ends ends = Ends(),
-                    Kinematics* kin = nullptr);
+                    Kinematics* kin = nullptr, TangentColumns* compact = nullptr);
 
 }  // namespace pair
 }  // namespace b2b

@@ -4,48 +4,11 @@
 
 #include "../common/finite.hpp"
 #include "normal_tangent.hpp"
+#include "tangent_mirror.hpp"
 
 namespace b2b {
 namespace pair {
 namespace {
-
-// K[r][c] = K[c][r] below the diagonal: the lower triangle becomes a copy of
-// the upper one.
-void mirror_upper(double* K, int n, int ld) {
-  for (int c = 0; c < n; ++c)
-    for (int r = c + 1; r < n; ++r) K[r + ld * c] = K[c + ld * r];
-}
-
-// The lower triangle of K (kNdof x kNdof) becomes a copy of the upper one,
-// and whether the upper one (and so all of K) is finite: entry * 0 is 0 for
-// a finite entry and NaN otherwise, summed as the entries are read. Two
-// columns at a time, so that each pair read from the upper triangle is
-// contiguous (K[c, r], K[c + 1, r]); one loop over the triangle instead of
-// a mirror and a finiteness check each reading all of it.
-bool mirror_upper_checked(double* K) {
-  static_assert(kNdof % 2 == 0, "columns in pairs");
-  double z0 = 0.0, z1 = 0.0;
-  for (int c = 0; c < kNdof; c += 2) {
-    double* k0 = K + kNdof * c;  // columns c and c + 1
-    double* k1 = k0 + kNdof;
-    const double u = k1[c];  // (c, c + 1)
-    z0 += k0[c] * 0.0 + u * 0.0;
-    z1 += k1[c + 1] * 0.0;
-    k0[c + 1] = u;
-    for (int r = c + 2; r < kNdof; r += 2) {  // an even count of rows: two at a time
-      const double* s0 = K + kNdof * r + c;  // (c, r) and (c + 1, r)
-      const double* s1 = s0 + kNdof;         // (c, r + 1) and (c + 1, r + 1)
-      const double x0 = s0[0], x1 = s0[1], y0 = s1[0], y1 = s1[1];
-      k0[r] = x0;
-      k0[r + 1] = y0;
-      k1[r] = x1;
-      k1[r + 1] = y1;
-      z0 += x0 * 0.0 + y0 * 0.0;
-      z1 += x1 * 0.0 + y1 * 0.0;
-    }
-  }
-  return z0 + z1 == 0.0;
-}
 
 // K (zeroed) at the used rows and columns from the upper triangle of the
 // compact Kc, both triangles written; whether those entries are finite.
@@ -67,11 +30,39 @@ bool scatter_symmetric(const double* Kc, int m, const int* cols, double* K) {
 
 }  // namespace
 
+void expand_tangent(const double* K, const TangentColumns& used, double* dst, int ld) {
+  if (used.m == kNdof && ld == kNdof) {
+    std::memcpy(dst, K, kNdof * kNdof * sizeof(double));
+    return;
+  }
+  if (used.m == kNdof) {
+    for (int c = 0; c < kNdof; ++c)
+      std::memcpy(dst + static_cast<size_t>(ld) * c, K + kNdof * c, kNdof * sizeof(double));
+    return;
+  }
+  if (ld == kNdof)
+    std::memset(dst, 0, kNdof * kNdof * sizeof(double));
+  else
+    for (int c = 0; c < kNdof; ++c)
+      std::memset(dst + static_cast<size_t>(ld) * c, 0, kNdof * sizeof(double));
+  // The used columns come in whole slots: three rows at a time.
+  for (int c = 0; c < used.m; ++c) {
+    double* col = dst + static_cast<size_t>(ld) * used.cols[c];
+    const double* src = K + kNdof * c;
+    for (int r = 0; r < used.m; r += 3) {
+      double* d3 = col + used.cols[r];
+      d3[0] = src[r];
+      d3[1] = src[r + 1];
+      d3[2] = src[r + 2];
+    }
+  }
+}
+
 TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
                                const Kinematics& k, const LawValue& law,
                                const FrictionContact& fc, const FrictionResult& fr,
                                const double* PA, const double* PAd, const double* PB,
-                               const double* PBd, double* K) {
+                               const double* PBd, double* K, TangentColumns* compact) {
   TangentResult res;
   // dG/dX = blockdiag(n.d2x_A/dX_A^2, -n.d2x_B/dX_B^2)
   //       + [P_A,xi^T n; 0] dxi^T + [0; -P_B,eta^T n] deta^T + J^T dn/dX,
@@ -93,15 +84,26 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
   res.symmetric = normal_symmetric && !friction;
   const bool curved = !A.seg->linear_in_X() || !B.seg->linear_in_X();
 
-  // The compact m x m matrix (leading dimension kNdof), K itself when every
-  // column is used; otherwise the unused rows and columns of K stay zero.
+  // The compact m x m matrix (leading dimension kNdof): K itself when every
+  // column is used or when the caller takes it compact (TangentColumns),
+  // otherwise a buffer scattered into K, whose unused rows and columns stay
+  // zero.
+  const bool keep_compact = compact != nullptr && !curved && m < kNdof;
+  if (compact) {
+    compact->m = keep_compact ? m : kNdof;
+    if (keep_compact) std::memcpy(compact->cols, cols, m * sizeof(int));
+  }
   double Kbuf[kNdof * kNdof];
-  double* Kc = (m == kNdof) ? K : Kbuf;
-  if (m < kNdof) std::memset(K, 0, kNdof * kNdof * sizeof(double));
+  double* Kc = (m == kNdof || keep_compact) ? K : Kbuf;
+  if (Kc != K) std::memset(K, 0, kNdof * kNdof * sizeof(double));
 
   if (res.symmetric) {
     // The upper triangle only, the curve Hessians on it too, then one mirror.
     normal_tangent_upper(lin, fp, f / k.rho_signed, Kc);
+    if (keep_compact) {
+      res.finite = mirror_compact_checked(Kc, m);
+      return res;
+    }
     if (!curved && Kc != K) {
       // Both segments linear in X (linear, midpoint): the compact triangle
       // is all there is; written to both triangles of K at once.
@@ -137,8 +139,9 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
   // Without the curves' second derivatives the compact matrix is all of K:
   // its finiteness is K's.
   bool finite_known = false;
-  if (!curved && Kc != K) {
+  if (!curved && m < kNdof) {
     for (int c = 0; c < m && res.finite; ++c) res.finite = all_finite(Kc + kNdof * c, m);
+    if (keep_compact) return res;
     finite_known = true;
   }
   if (Kc != K)  // the used columns come in whole slots: three rows at a time

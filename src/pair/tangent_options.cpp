@@ -8,9 +8,9 @@
 namespace b2b {
 namespace pair {
 
-void symmetrize(double* K) {
-  for (int c = 0; c < kNdof; ++c)
-    for (int r = c + 1; r < kNdof; ++r) {
+void symmetrize(double* K, int n) {
+  for (int c = 0; c < n; ++c)
+    for (int r = c + 1; r < n; ++r) {
       const double a = K[r + kNdof * c], b = K[c + kNdof * r];
       // Two finite entries above DBL_MAX / 2 of one sign have an infinite
       // sum, and the callers have checked K's finiteness before this: the

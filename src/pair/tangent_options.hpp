@@ -9,6 +9,7 @@
 
 #include "../common/enumeration.hpp"
 #include "contact_kinematics.hpp"
+#include "linearization.hpp"
 #include "params.hpp"
 
 namespace b2b {
@@ -26,9 +27,10 @@ static_assert(in_value_order(kTangentModes), "kTangentModes lists B2B_TANGENT_* 
 
 inline constexpr Enumeration kTangentModeEnumeration = enumeration_of(kTangentModes);
 
-// K = (K + K^T) / 2 (24 x 24, leading dimension 24); finite entries give
-// finite ones (no overflow in the sum).
-void symmetrize(double* K);
+// K = (K + K^T) / 2 on its leading n x n block (leading dimension 24; n 24
+// for all of K, less for a compact tangent, TangentColumns); finite entries
+// give finite ones (no overflow in the sum).
+void symmetrize(double* K, int n = kNdof);
 
 // K = -slope G G^T with G = [P_A^T n; -P_B^T n] (the main term).
 void main_term(double slope, const double* PA, const double* PB, const double* n, double* K);

@@ -1,5 +1,6 @@
-// The library's finiteness guards (src/common/finite.hpp, header-only and
-// internal, so compiled in here), each way round: every output the library
+// The library's finiteness guards (src/common/finite.hpp, and the symmetric
+// tangent's mirror with its check, src/pair/tangent_mirror.hpp; header-only
+// and internal, so compiled in here), each way round: every output the library
 // returns with B2B_OK has passed one of them, so a guard that let an Inf or
 // a NaN through, or refused finite numbers, would leak or lose results in
 // silence. The tangent's guard, all_finite_by_sum, decides from the sum of
@@ -8,11 +9,13 @@
 // range that do not cancel): a path no contact scene reaches, tested here.
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <limits>
 #include <vector>
 
 #include "../../src/common/finite.hpp"
+#include "../../src/pair/tangent_mirror.hpp"
 
 // Last: Check's macros (fail, ...) would rename members of the C++ library.
 #include "test_support.h"
@@ -117,6 +120,54 @@ START_TEST(odd_lengths) {
 }
 END_TEST
 
+// The mirror of the symmetric tangent (the upper triangle into the lower,
+// the whole 24 x 24 or the compact m x m block of a linear-in-X pair) and
+// its finiteness check: the lower triangle's old contents (NaN here) never
+// count, a non-finite entry anywhere in the upper one does, and a sum that
+// overflows over finite entries falls back to the exact check.
+namespace {
+
+constexpr int kLd = b2b::pair::kNdof;
+
+// K (24 x 24) with the upper triangle of the m x m block from value(r, c),
+// everything else NaN; whether the mirror's answer is `finite` and the
+// block symmetric, equal to the upper triangle.
+template <class Value>
+void expect_mirror(int m, Value value, bool finite, const char* what) {
+  std::vector<double> K(kLd * kLd, kNaN);
+  for (int c = 0; c < m; ++c)
+    for (int r = 0; r <= c; ++r) K[r + kLd * c] = value(r, c);
+  const bool answer = m == kLd ? b2b::pair::mirror_upper_checked(K.data())
+                               : b2b::pair::mirror_compact_checked(K.data(), m);
+  if (answer != finite) ck_abort_msg("%s (m %d): finite %d, expected %d", what, m, answer, finite);
+  for (int c = 0; c < m; ++c)
+    for (int r = c + 1; r < m; ++r)
+      if (std::memcmp(&K[r + kLd * c], &K[c + kLd * r], sizeof(double)) != 0)
+        ck_abort_msg("%s (m %d): K(%d, %d) = %g is not K(%d, %d) = %g", what, m, r, c,
+                     K[r + kLd * c], c, r, K[c + kLd * r]);
+}
+
+}  // namespace
+
+START_TEST(mirror_of_the_symmetric_tangent) {
+  for (int m : {12, 18, kLd}) {
+    expect_mirror(m, [](int r, int c) { return std::sin(0.3 * r + 0.7 * c) * 1e3; }, true,
+                  "ordinary entries");
+    expect_mirror(m, [](int, int) { return 0.9 * DBL_MAX; }, true,
+                  "entries of 0.9 DBL_MAX (their sum overflows)");
+    const double bad[3] = {kInf, -kInf, kNaN};
+    for (double x : bad)
+      for (int c = 0; c < m; ++c)
+        for (int r = 0; r <= c; ++r) {
+          const auto one_bad = [&](int i, int j) { return i == r && j == c ? x : 1.0; };
+          expect_mirror(m, one_bad, false, "one non-finite entry");
+          const auto among_huge = [&](int i, int j) { return i == r && j == c ? x : 0.9 * DBL_MAX; };
+          expect_mirror(m, among_huge, false, "one non-finite entry among huge ones");
+        }
+  }
+}
+END_TEST
+
 int main() {
   Suite* s = suite_create("finite");
   TCase* tc = tcase_create("guards");
@@ -125,6 +176,7 @@ int main() {
   tcase_add_test(tc, one_nonfinite_entry_anywhere);
   tcase_add_test(tc, opposite_infinities);
   tcase_add_test(tc, odd_lengths);
+  tcase_add_test(tc, mirror_of_the_symmetric_tangent);
   suite_add_tcase(s, tc);
   return tst_run_suite(s);
 }

@@ -8,7 +8,12 @@
  *   FD         the exact tangent to 1e-6 (relative, central differences)
  * and in every mode the residual and info are those of EXACT (but for
  * B2B_INFO_SYMMETRIC). Also through the contact model: its FD tangent
- * against its exact one. */
+ * against its exact one. And the tangent as b2b_pair_eval writes it into
+ * the host's array (where both segments are linear in X it is expanded
+ * there from the used rows and columns, src/pair/tangent_assembly.hpp):
+ * every entry of the 24 x 24 block written, the rows and columns of the
+ * slots no segment reads exactly zero, the padding rows of a larger ldk
+ * untouched. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -151,12 +156,93 @@ START_TEST(model_fd_against_exact) {
 }
 END_TEST
 
+/* b2b_pair_eval's tangent into an array of NaN with leading dimension ldk. */
+static int eval_into_nan(const b2b_params *p, const tst_pair_spec *spec, const double X[24],
+                         const double *h0, int ldk, double *K) {
+  const int segments[6] = {spec->kind[0], spec->start_rule[0], spec->end_rule[0],
+                           spec->kind[1], spec->start_rule[1], spec->end_rule[1]};
+  double h1[64], info[32], r[24];
+  int nh = 0, status = -1;
+  char msg[B2B_ERRMSG_LEN] = "";
+  ok(b2b_params_history_size(p, &nh, msg, sizeof msg), msg);
+  for (int i = 0; i < ldk * 24; ++i) K[i] = NAN;
+  ok(b2b_pair_eval(p, segments, X, NULL, spec->radius, h0, h1, nh, &status, info, r, K, ldk, msg,
+                   sizeof msg),
+     msg);
+  return status;
+}
+
+START_TEST(written_whole) {
+  enum { LD = 27 };
+  tst_rng rng;
+  tst_rng_seed(&rng, 4711);
+  int zero_rows = 0;
+  for (int fr = 0; fr < 2; ++fr)
+    for (int mode = B2B_TANGENT_EXACT; mode <= B2B_TANGENT_SYMMETRIC; ++mode) {
+      const double mu = fr ? 0.3 : 0.0;
+      b2b_params *p = with_mode(B2B_LAW_LINEAR, mu, mode);
+      b2b_params *pf = with_mode(B2B_LAW_LINEAR, mu, B2B_TANGENT_FD);
+      const int nh = tst_history_len(p);
+      for (int ka = 0; ka < B2B_CURVE_KIND_COUNT; ++ka)
+        for (int kb = 0; kb < B2B_CURVE_KIND_COUNT; ++kb)
+          for (int far = 0; far < 2; ++far) {
+            tst_pair_spec spec = {{ka, kb},
+                                  {B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR},
+                                  {B2B_END_NEIGHBOUR, B2B_END_NEIGHBOUR},
+                                  {0.1, 0.1}};
+            double X[24], h0[16] = {0}, h1[16], info[32], r[24];
+            tst_crossing(&rng, &spec, 0.2, tst_uniform(&rng, 30, 90), tst_uniform(&rng, -0.6, 0.6),
+                         tst_uniform(&rng, -0.6, 0.6), far ? 0.5 : 0.19, X);
+            const int expected = far ? B2B_CONTACT_OPEN : B2B_CONTACT_ACTIVE;
+            ck_assert_int_eq(tst_pair(p, &spec, X, NULL, h1, info, r, NULL), expected);
+            memcpy(h0, h1, sizeof(double) * nh);
+            for (int k = 0; k < 12; k += 3) X[k] += 0.004;  /* a slip for friction */
+            double K24[24 * 24], Kld[LD * 24], Kfd[24 * 24];
+            ck_assert_int_eq(eval_into_nan(p, &spec, X, h0, 24, K24), expected);
+            ck_assert_int_eq(eval_into_nan(p, &spec, X, h0, LD, Kld), expected);
+            ck_assert_int_eq(eval_into_nan(pf, &spec, X, h0, 24, Kfd), expected);
+            for (int c = 0; c < 24; ++c) {
+              for (int rr = 0; rr < 24; ++rr) {
+                const double k = K24[rr + 24 * c];
+                ck_assert_msg(isfinite(k), "kinds %d %d: K(%d, %d) = %g", ka, kb, rr, c, k);
+                ck_assert(memcmp(&k, &Kld[rr + LD * c], sizeof k) == 0);
+                if (far) ck_assert_msg(k == 0.0, "open pair: K(%d, %d) = %g", rr, c, k);
+              }
+              for (int rr = 24; rr < LD; ++rr) ck_assert(isnan(Kld[rr + LD * c]));
+            }
+            if (far) continue;
+            /* A coordinate of a slot neither segment reads: the FD tangent's
+             * column is exactly zero (the residual does not move); so must
+             * the exact tangent's row and column be. */
+            for (int a = 0; a < 24; ++a) {
+              int unread = 1;
+              for (int rr = 0; rr < 24 && unread; ++rr) unread = Kfd[rr + 24 * a] == 0.0;
+              if (!unread) continue;
+              ++zero_rows;
+              for (int i = 0; i < 24; ++i)
+                ck_assert_msg(K24[i + 24 * a] == 0.0 && K24[a + 24 * i] == 0.0,
+                              "kinds %d %d: coordinate %d is read by neither segment, but "
+                              "K(%d, %d) = %g, K(%d, %d) = %g",
+                              ka, kb, a, i, a, K24[i + 24 * a], a, i, K24[a + 24 * i]);
+            }
+          }
+      b2b_params_destroy(&p);
+      b2b_params_destroy(&pf);
+    }
+  /* every kind pair with linear or midpoint on a side has such coordinates */
+  printf("written whole: %d coordinates read by neither segment, their rows and columns zero\n",
+         zero_rows);
+  ck_assert_int_ge(zero_rows, 100);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("pair_tangent_options");
   TCase *tc = tcase_create("tangent_options");
   tcase_set_timeout(tc, 300);
   tcase_add_test(tc, each_mode_against_its_definition);
   tcase_add_test(tc, model_fd_against_exact);
+  tcase_add_test(tc, written_whole);
   suite_add_tcase(s, tc);
   return tst_run_suite(s);
 }
