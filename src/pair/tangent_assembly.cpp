@@ -28,6 +28,22 @@ bool scatter_symmetric(const double* Kc, int m, const int* cols, double* K) {
   return finite;
 }
 
+// The compact m x m Kc (leading dimension kNdof) into the rows and columns
+// cols of dst (leading dimension ld), which are not otherwise written. The
+// used columns come in whole slots: three rows at a time.
+void scatter_compact(const double* Kc, int m, const int* cols, double* dst, int ld) {
+  for (int c = 0; c < m; ++c) {
+    double* col = dst + static_cast<size_t>(ld) * cols[c];
+    const double* src = Kc + kNdof * c;
+    for (int r = 0; r < m; r += 3) {
+      double* d3 = col + cols[r];
+      d3[0] = src[r];
+      d3[1] = src[r + 1];
+      d3[2] = src[r + 2];
+    }
+  }
+}
+
 }  // namespace
 
 void expand_tangent(const double* K, const TangentColumns& used, double* dst, int ld) {
@@ -45,17 +61,7 @@ void expand_tangent(const double* K, const TangentColumns& used, double* dst, in
   else
     for (int c = 0; c < kNdof; ++c)
       std::memset(dst + static_cast<size_t>(ld) * c, 0, kNdof * sizeof(double));
-  // The used columns come in whole slots: three rows at a time.
-  for (int c = 0; c < used.m; ++c) {
-    double* col = dst + static_cast<size_t>(ld) * used.cols[c];
-    const double* src = K + kNdof * c;
-    for (int r = 0; r < used.m; r += 3) {
-      double* d3 = col + used.cols[r];
-      d3[0] = src[r];
-      d3[1] = src[r + 1];
-      d3[2] = src[r + 2];
-    }
-  }
+  scatter_compact(K, used.m, used.cols, dst, ld);
 }
 
 TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const SegmentRef& B,
@@ -144,17 +150,7 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
     if (keep_compact) return res;
     finite_known = true;
   }
-  if (Kc != K)  // the used columns come in whole slots: three rows at a time
-    for (int c = 0; c < m; ++c) {
-      double* dst = K + kNdof * cols[c];
-      const double* src = Kc + kNdof * c;
-      for (int r = 0; r < m; r += 3) {
-        double* d3 = dst + cols[r];
-        d3[0] = src[r];
-        d3[1] = src[r + 1];
-        d3[2] = src[r + 2];
-      }
-    }
+  if (Kc != K) scatter_compact(Kc, m, cols, K, kNdof);
   // Curvature of the smoothed curves in X: only the node-preserving kinds
   // (and host end tangents) are nonlinear in X; the linear kind pays nothing.
   if (curved) {
