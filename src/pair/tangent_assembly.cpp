@@ -10,24 +10,6 @@ namespace b2b {
 namespace pair {
 namespace {
 
-// K (zeroed) at the used rows and columns from the upper triangle of the
-// compact Kc, both triangles written; whether those entries are finite.
-bool scatter_symmetric(const double* Kc, int m, const int* cols, double* K) {
-  bool finite = true;
-  for (int c = 0; c < m; ++c) {
-    const double* src = Kc + kNdof * c;
-    finite = finite && all_finite(src, c + 1);
-    double* dst = K + kNdof * cols[c];
-    double* row = K + cols[c];
-    for (int r = 0; r <= c; ++r) {
-      const double v = src[r];
-      dst[cols[r]] = v;
-      row[kNdof * cols[r]] = v;
-    }
-  }
-  return finite;
-}
-
 // The compact m x m Kc (leading dimension kNdof) into the rows and columns
 // cols of dst (leading dimension ld), which are not otherwise written. The
 // used columns come in whole slots: three rows at a time.
@@ -106,14 +88,11 @@ TangentResult assemble_tangent(const Params& params, const SegmentRef& A, const 
   if (res.symmetric) {
     // The upper triangle only, the curve Hessians on it too, then one mirror.
     normal_tangent_upper(lin, fp, f / k.rho_signed, Kc);
-    if (keep_compact) {
+    if (!curved && m < kNdof) {
+      // Both segments linear in X (linear, midpoint): the compact matrix is
+      // all there is, left compact or scattered into K.
       res.finite = mirror_compact_checked(Kc, m);
-      return res;
-    }
-    if (!curved && Kc != K) {
-      // Both segments linear in X (linear, midpoint): the compact triangle
-      // is all there is; written to both triangles of K at once.
-      res.finite = scatter_symmetric(Kc, m, cols, K);
+      if (!keep_compact) scatter_compact(Kc, m, cols, K, kNdof);
       return res;
     }
     if (Kc != K)

@@ -21,10 +21,10 @@ inline void mirror_upper(double* K, int n, int ld) {
 // and whether the upper one (and so all of K) is finite: the entries are
 // summed as they are read, and a finite sum settles it (all_finite_by_sum's
 // argument); a sum that is not finite needs the exact check (it may have
-// overflowed over finite entries). Two columns at a time, so that each pair read from
-// the upper triangle is contiguous (K[c, r], K[c + 1, r]); one loop over the
-// triangle instead of a mirror and a finiteness check each reading all of
-// it.
+// overflowed over finite entries). Two columns at a time, so that each pair
+// read from the upper triangle is contiguous (K[c, r], K[c + 1, r]); one
+// loop over the triangle instead of a mirror and a finiteness check each
+// reading all of it.
 inline bool mirror_upper_checked(double* K) {
   static_assert(kNdof % 2 == 0, "columns in pairs");
   double z0 = 0.0, z1 = 0.0;

@@ -9,8 +9,8 @@
 // range that do not cancel): a path no contact scene reaches, tested here.
 #include <cfloat>
 #include <cmath>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <vector>
 
